@@ -1,0 +1,26 @@
+# Warning flags for every rollcontact target; -Werror when ROLLCONTACT_WERROR is on (CI).
+add_library(rollcontact_warnings INTERFACE)
+target_compile_options(rollcontact_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion -Wnon-virtual-dtor
+  -Wold-style-cast -Woverloaded-virtual -Wimplicit-fallthrough
+  $<$<BOOL:${ROLLCONTACT_WERROR}>:-Werror>
+  # GCC 12 reports false -Wrestrict positives inside libstdc++'s std::string operator+ at -O2/-O3
+  # (GCC bug 105329); the warning says nothing about our code there.
+  $<$<CXX_COMPILER_ID:GNU>:-Wno-restrict>)
+
+if(ROLLCONTACT_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+# rollcontact_add_module(<folder> DEPS <libs...>): one static library per src/ folder, so the
+# layering of ARCHITECTURE.md is enforced by the linker (grid <- elastic <- normal, ...).
+function(rollcontact_add_module name)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  file(GLOB _srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  add_library(rollcontact_${name} STATIC ${_srcs})
+  target_include_directories(rollcontact_${name}
+    PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include> $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>)
+  target_link_libraries(rollcontact_${name} PUBLIC ${ARG_DEPS} PRIVATE rollcontact_warnings)
+  set_target_properties(rollcontact_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endfunction()

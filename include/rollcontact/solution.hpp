@@ -1,0 +1,85 @@
+#pragma once
+// Solution: fields on the grid, totals and solver statistics of one solved case.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rollcontact/grid.hpp"
+
+namespace rollcontact {
+
+/// Element division codes (spec/physics.md §6).
+enum class ElementState : std::uint8_t { Exterior = 0, Adhesion = 1, Slip = 2, Plastic = 3 };
+
+/// Combined elastic constants of the two bodies (spec/physics.md §3.1).
+struct CombinedMaterial {
+  double g = 0.0;   ///< combined shear modulus G [N/mm²]
+  double nu = 0.0;  ///< combined Poisson ratio ν [-]
+  double k = 0.0;   ///< difference parameter K [-] (0 for quasi-identical bodies)
+};
+
+/// Hertz solution used for Hertzian potential-contact options (IPOTCN < 0).
+struct HertzReport {
+  bool present = false;
+  bool two_dimensional = false;
+  double a1 = 0.0, b1 = 0.0;  ///< curvatures [1/mm]
+  double aa = 0.0, bb = 0.0;  ///< semi-axes [mm] (2-D: half length a, half width b)
+  double rho = 0.0;           ///< effective radius of curvature [mm]
+  double cp = 0.0;            ///< sqrt(a b) [mm]
+  double pen = 0.0;           ///< approach [mm]
+  double fn = 0.0;            ///< normal force [N]
+  double pmax = 0.0;          ///< maximum pressure [N/mm²]
+  double scale = 1.0;         ///< potential contact / Hertz area
+};
+
+/// Totals (spec/outputs.md §4). Forces act on body 1.
+struct Totals {
+  double fn = 0.0, fx = 0.0, fy = 0.0;  ///< [N]
+  double mz = 0.0;                      ///< torsional moment about the grid origin [N mm]
+  double pen = 0.0;                     ///< approach [mm]
+  double pmax = 0.0;                    ///< maximum pressure [N/mm²]
+  double creep_x = 0.0, creep_y = 0.0, spin = 0.0;  ///< effective creepages (T=2,3)
+  double shift_x = 0.0, shift_y = 0.0;              ///< effective shifts (T=1) [mm]
+  double elastic_energy = 0.0;                      ///< [J] (= 1e-3 N·mm)
+  double frictional_power = 0.0;                    ///< [W]; T=1: frictional work per step [J]
+  double contact_area = 0.0;                        ///< [mm²]
+};
+
+/// Element counts (CONTACT STATISTICS block).
+struct Statistics {
+  int npot = 0, ncon = 0, nadh = 0, nslip = 0, nplast = 0;
+  int inorm = 0;  ///< normal outer iterations (Panagiotopoulos passes)
+  int itang = 0;  ///< tangential outer iterations
+};
+
+/// What the solvers did. converged == false means the numbers must not be trusted.
+struct SolverReport {
+  bool converged = true;
+  std::string message;        ///< why not converged / warnings
+  int normal_iterations = 0;  ///< total CG iterations of the normal solver
+  int normal_active_set_changes = 0;
+  int normal_products = 0;       ///< influence-matrix products (FFT convolutions) used
+  double normal_residual = 0.0;  ///< final relative change ||Δp||/||p||
+  int tangential_iterations = 0;
+  int newton_iterations = 0;
+};
+
+/// The solved case. Fields have grid.size() entries in element order ix + mx*iy.
+struct Solution {
+  Grid grid;
+  CombinedMaterial material;
+  HertzReport hertz;
+  std::vector<double> h;           ///< undeformed distance without approach [mm] (1e30: excluded)
+  std::vector<double> pn;          ///< normal pressure [N/mm²]
+  std::vector<double> px, py;      ///< tangential tractions [N/mm²]
+  std::vector<double> un, ux, uy;  ///< displacement differences [mm]
+  std::vector<double> sx, sy;      ///< slip (velocity / δq, or distance for T=1)
+  std::vector<ElementState> state;
+  Totals totals;
+  Statistics statistics;
+  SolverReport solver;
+  std::vector<std::string> warnings;  ///< silent adjustments made (echoed in reports)
+};
+
+}  // namespace rollcontact

@@ -1,0 +1,52 @@
+#pragma once
+// u = A·p for one Toeplitz (convolution) block of the influence matrix: by zero-padded FFT with
+// the kernel transformed once, or by dense summation (tiny grids, test oracle).
+
+#include <complex>
+#include <memory>
+#include <vector>
+
+#include "elastic/fft_backend.hpp"
+#include "elastic/influence.hpp"
+
+namespace rollcontact::elastic {
+
+/// Common interface: apply() computes u_I = Σ_J K(I−J) p_J over the whole mx × my grid.
+class LinearOperator {
+ public:
+  virtual ~LinearOperator() = default;
+  /// p and u have mx*my entries (ix fastest); u is overwritten. No allocation.
+  virtual void apply(const double* p, double* u) = 0;
+};
+
+/// FFT-based product; kernel spectrum and plans made in the constructor. The padded size is
+/// good_fft_size(2mx−1) × good_fft_size(2my−1): at least 2m−1 avoids wrap-around of the linear
+/// convolution, and 2-3-5-smooth sizes keep both backends fast (2mx itself may contain a large
+/// prime). apply() allocates nothing.
+class FftConvolution final : public LinearOperator {
+ public:
+  FftConvolution(const Kernel& kernel, FftBackendKind backend,
+                 FftPlanning planning = FftPlanning::Estimate);
+  void apply(const double* p, double* u) override;
+  const FftEngine& engine() const noexcept { return *engine_; }
+  int mx() const noexcept { return mx_; }
+  int my() const noexcept { return my_; }
+
+ private:
+  int mx_, my_;
+  std::unique_ptr<FftEngine> engine_;
+  std::vector<std::complex<double>> kernel_hat_;  // scaled by 1/(n_fast n_slow)
+};
+
+/// Dense O(N²) product, the oracle.
+class DenseConvolution final : public LinearOperator {
+ public:
+  explicit DenseConvolution(Kernel kernel);
+  void apply(const double* p, double* u) override;
+  const Kernel& kernel() const noexcept { return kernel_; }
+
+ private:
+  Kernel kernel_;
+};
+
+}  // namespace rollcontact::elastic

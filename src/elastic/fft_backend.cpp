@@ -1,0 +1,58 @@
+// Backend selection for the FFT engines.
+
+#include "elastic/fft_backend.hpp"
+
+#include <string>
+#include <string_view>
+
+#include "elastic/fft_engines.hpp"
+#include "rollcontact/errors.hpp"
+#include "rollcontact/version.hpp"
+
+namespace rollcontact::elastic {
+
+FftBackendKind resolve_fft_backend(FftBackendKind kind) noexcept {
+  if (kind != FftBackendKind::Default) return kind;
+  return std::string_view(default_fft_backend) == "fftw" ? FftBackendKind::Fftw
+                                                         : FftBackendKind::Kiss;
+}
+
+bool fft_backend_available(FftBackendKind kind) noexcept {
+  switch (kind) {
+    case FftBackendKind::Default:
+      return fft_backend_available(resolve_fft_backend(kind));
+    case FftBackendKind::Fftw:
+      return ROLLCONTACT_HAVE_FFTW != 0;
+    case FftBackendKind::Kiss:
+      return true;
+  }
+  return false;
+}
+
+std::unique_ptr<FftEngine> make_fft_engine(FftBackendKind kind, int n_fast, int n_slow,
+                                           FftPlanning planning) {
+  if (n_fast < 1 || n_slow < 1) {
+    throw ProblemError("FFT size must be at least 1 x 1, got " + std::to_string(n_fast) + " x " +
+                       std::to_string(n_slow));
+  }
+  const FftBackendKind resolved = resolve_fft_backend(kind);
+  if (!fft_backend_available(resolved)) {
+    throw NotSupportedError(
+        "the FFTW backend was not built (configure with ROLLCONTACT_WITH_FFTW)");
+  }
+  if (resolved == FftBackendKind::Fftw) return detail::make_fftw_engine(n_fast, n_slow, planning);
+  return detail::make_kiss_engine(n_fast, n_slow);
+}
+
+int good_fft_size(int n_min) {
+  if (n_min < 1) throw ProblemError("good_fft_size: size must be at least 1");
+  for (int n = n_min;; ++n) {
+    int m = n;
+    for (int f : {2, 3, 5}) {
+      while (m % f == 0) m /= f;
+    }
+    if (m == 1) return n;
+  }
+}
+
+}  // namespace rollcontact::elastic

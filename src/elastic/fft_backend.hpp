@@ -1,0 +1,67 @@
+#pragma once
+// A small interface over 2-D real-to-complex FFT libraries. Two implementations:
+// FFTW3 (GPL, fastest) and KISS FFT in double precision (permissive). See docs/decisions.md.
+
+#include <complex>
+#include <memory>
+#include <string_view>
+
+#include "rollcontact/solve.hpp"
+
+namespace rollcontact::elastic {
+
+/// Plans for real n_fast × n_slow arrays stored with the fast index contiguous
+/// (element (i, j) at i + n_fast*j). The half-spectrum has (n_fast/2+1) × n_slow complex values,
+/// stored likewise. Transforms are unnormalised: inverse(forward(x)) = n_fast*n_slow*x.
+/// An engine owns its plans; calls are not thread-safe on one engine.
+class FftEngine {
+ public:
+  virtual ~FftEngine() = default;
+  virtual void forward(const double* in, std::complex<double>* out) = 0;
+  virtual void inverse(const std::complex<double>* in, double* out) = 0;
+  virtual std::string_view name() const noexcept = 0;
+
+  /// The engine's own work arrays (aligned as the library wants them): real_data() holds
+  /// real_size() values, spectrum_data() spectrum_size(). With execute_forward/execute_inverse they
+  /// let a caller transform without the copies that forward()/inverse() make.
+  virtual double* real_data() noexcept = 0;
+  virtual std::complex<double>* spectrum_data() noexcept = 0;
+  /// real_data() → spectrum_data(). Slow rows j ≥ rows_in of real_data() are taken as zero and are
+  /// not read (zero-padded input: an engine may skip their transforms). rows_in ∈ [0, n_slow].
+  virtual void execute_forward(int rows_in) = 0;
+  /// spectrum_data() → real_data(); only slow rows j < rows_out of the result are guaranteed, the
+  /// others are unspecified. spectrum_data() is destroyed. rows_out ∈ [0, n_slow].
+  virtual void execute_inverse(int rows_out) = 0;
+
+  int n_fast() const noexcept { return n_fast_; }
+  int n_slow() const noexcept { return n_slow_; }
+  std::size_t spectrum_size() const noexcept {
+    return static_cast<std::size_t>(n_fast_ / 2 + 1) * static_cast<std::size_t>(n_slow_);
+  }
+  std::size_t real_size() const noexcept {
+    return static_cast<std::size_t>(n_fast_) * static_cast<std::size_t>(n_slow_);
+  }
+
+ protected:
+  FftEngine(int n_fast, int n_slow) : n_fast_(n_fast), n_slow_(n_slow) {}
+
+ private:
+  int n_fast_, n_slow_;
+};
+
+/// Creates an engine; Default resolves to the configure-time default. Throws NotSupportedError
+/// when the requested backend was not built.
+std::unique_ptr<FftEngine> make_fft_engine(FftBackendKind kind, int n_fast, int n_slow,
+                                           FftPlanning planning = FftPlanning::Estimate);
+
+/// Backends compiled into this build (Default: always true).
+bool fft_backend_available(FftBackendKind kind) noexcept;
+
+/// Default resolved to the configure-time choice (rollcontact::default_fft_backend).
+FftBackendKind resolve_fft_backend(FftBackendKind kind) noexcept;
+
+/// Smallest n ≥ n_min (n_min ≥ 1) whose only prime factors are 2, 3 and 5: sizes that both
+/// backends transform fast (a prime factor such as 647 in 1294 makes KISS FFT O(n²)).
+int good_fft_size(int n_min);
+
+}  // namespace rollcontact::elastic

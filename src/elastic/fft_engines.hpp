@@ -1,0 +1,16 @@
+#pragma once
+// Internal: constructors of the concrete FFT engines, used by the factory in fft_backend.cpp.
+
+#include <memory>
+
+#include "elastic/fft_backend.hpp"
+
+namespace rollcontact::elastic::detail {
+
+/// FFTW3 engine (only when ROLLCONTACT_HAVE_FFTW; otherwise throws NotSupportedError).
+std::unique_ptr<FftEngine> make_fftw_engine(int n_fast, int n_slow, FftPlanning planning);
+
+/// Double-precision KISS FFT engine (Eigen's unsupported FFT module).
+std::unique_ptr<FftEngine> make_kiss_engine(int n_fast, int n_slow);
+
+}  // namespace rollcontact::elastic::detail

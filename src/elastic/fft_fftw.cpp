@@ -1,0 +1,196 @@
+// FFTW3 engine: one 2-D r2c and one 2-D c2r plan (FFTW_ESTIMATE or FFTW_MEASURE) on the engine's
+// own aligned arrays. Compiles to a stub that throws when FFTW is not built.
+
+#include "elastic/fft_engines.hpp"
+#include "rollcontact/errors.hpp"
+
+#if ROLLCONTACT_HAVE_FFTW
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <complex>
+#include <cstring>
+#include <mutex>
+#include <new>
+#include <vector>
+
+namespace rollcontact::elastic::detail {
+
+namespace {
+
+/// FFTW's planner (plan creation and destruction) is not thread-safe; engines are created per
+/// State, possibly on several threads. Executing plans is thread-safe.
+std::mutex& planner_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+class FftwEngine final : public FftEngine {
+ public:
+  FftwEngine(int n_fast, int n_slow, FftPlanning planning)
+      : FftEngine(n_fast, n_slow),
+        flags_(planning == FftPlanning::Measure ? FFTW_MEASURE : FFTW_ESTIMATE) {
+    real_ = static_cast<double*>(fftw_malloc(sizeof(double) * real_size()));
+    spectrum_ = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * spectrum_size()));
+    if (real_ == nullptr || spectrum_ == nullptr) {
+      release();
+      throw std::bad_alloc();
+    }
+    {
+      // FFTW is row-major: n0 is the slow index, n1 the contiguous one.
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      forward_ = fftw_plan_dft_r2c_2d(n_slow, n_fast, real_, spectrum_, flags_);
+      inverse_ = fftw_plan_dft_c2r_2d(n_slow, n_fast, spectrum_, real_, flags_);
+    }
+    if (forward_ == nullptr || inverse_ == nullptr) {
+      release();
+      throw Error("FFTW could not create a plan");
+    }
+    // FFTW_MEASURE scribbles on the arrays while planning.
+    std::fill_n(real_, real_size(), 0.0);
+  }
+  FftwEngine(const FftwEngine&) = delete;
+  FftwEngine& operator=(const FftwEngine&) = delete;
+  ~FftwEngine() override { release(); }
+
+  void forward(const double* in, std::complex<double>* out) override {
+    std::memcpy(real_, in, sizeof(double) * real_size());
+    fftw_execute(forward_);
+    std::memcpy(static_cast<void*>(out), spectrum_, sizeof(fftw_complex) * spectrum_size());
+  }
+  void inverse(const std::complex<double>* in, double* out) override {
+    // Multi-dimensional c2r always destroys its input: work on the engine's copy.
+    std::memcpy(spectrum_, static_cast<const void*>(in), sizeof(fftw_complex) * spectrum_size());
+    fftw_execute(inverse_);
+    std::memcpy(out, real_, sizeof(double) * real_size());
+  }
+  std::string_view name() const noexcept override { return "fftw"; }
+  double* real_data() noexcept override { return real_; }
+  std::complex<double>* spectrum_data() noexcept override {
+    // fftw_complex is double[2], layout-compatible with std::complex<double> (FFTW manual §4.1.1).
+    return reinterpret_cast<std::complex<double>*>(spectrum_);
+  }
+  void execute_forward(int rows_in) override {
+    rows_in = std::clamp(rows_in, 0, n_slow());
+    if (rows_in == n_slow()) {
+      fftw_execute(forward_);
+      return;
+    }
+    if (rows_in == 0) {
+      std::fill(spectrum_[0], spectrum_[0] + 2 * spectrum_size(), 0.0);
+      return;
+    }
+    // Row-pruned: r2c of the nonzero rows only, zero the other spectrum rows, then the
+    // slow-index transforms of all columns.
+    const Pruned& p = pruned(rows_in);
+    fftw_execute(p.rows_forward);
+    std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
+    fftw_execute(columns_forward_);
+  }
+  void execute_inverse(int rows_out) override {
+    rows_out = std::clamp(rows_out, 0, n_slow());
+    if (rows_out == n_slow()) {
+      fftw_execute(inverse_);
+      return;
+    }
+    if (rows_out == 0) return;
+    const Pruned& p = pruned(rows_out);
+    fftw_execute(columns_inverse_);
+    fftw_execute(p.rows_inverse);
+  }
+
+ private:
+  /// Plans of the row-pruned transforms for `rows` rows.
+  struct Pruned {
+    int rows;
+    fftw_plan rows_forward;  // r2c along the fast index of rows 0 … rows−1
+    fftw_plan rows_inverse;  // c2r likewise (destroys its input, as allowed)
+  };
+
+  std::size_t half_row_offset(int rows) const noexcept {
+    return static_cast<std::size_t>(rows) * static_cast<std::size_t>(n_fast() / 2 + 1);
+  }
+
+  /// Plans are made on first use of a row count (FftConvolution does this in its constructor,
+  /// so its apply() never plans). Planning overwrites the arrays: their contents are saved.
+  const Pruned& pruned(int rows) {
+    for (const Pruned& p : pruned_) {
+      if (p.rows == rows) return p;
+    }
+    const std::vector<double> real_copy(real_, real_ + real_size());
+    const std::vector<double> spectrum_copy(spectrum_[0], spectrum_[0] + 2 * spectrum_size());
+    const int nf = n_fast(), ns = n_slow(), half = nf / 2 + 1;
+    Pruned p{rows, nullptr, nullptr};
+    {
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      if (columns_forward_ == nullptr) {
+        columns_forward_ = fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
+                                              nullptr, half, 1, FFTW_FORWARD, flags_);
+        columns_inverse_ = fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
+                                              nullptr, half, 1, FFTW_BACKWARD, flags_);
+      }
+      p.rows_forward = fftw_plan_many_dft_r2c(1, &nf, rows, real_, nullptr, 1, nf, spectrum_,
+                                              nullptr, 1, half, flags_);
+      p.rows_inverse = fftw_plan_many_dft_c2r(1, &nf, rows, spectrum_, nullptr, 1, half, real_,
+                                              nullptr, 1, nf, flags_);
+    }
+    pruned_.push_back(p);  // before the check, so that release() destroys partial plans
+    if (columns_forward_ == nullptr || columns_inverse_ == nullptr || p.rows_forward == nullptr ||
+        p.rows_inverse == nullptr) {
+      throw Error("FFTW could not create a pruned plan");
+    }
+    std::copy(real_copy.begin(), real_copy.end(), real_);
+    std::copy(spectrum_copy.begin(), spectrum_copy.end(), spectrum_[0]);
+    return pruned_.back();
+  }
+
+  void release() noexcept {
+    {
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      for (fftw_plan plan : {forward_, inverse_, columns_forward_, columns_inverse_}) {
+        if (plan != nullptr) fftw_destroy_plan(plan);
+      }
+      for (const Pruned& p : pruned_) {
+        if (p.rows_forward != nullptr) fftw_destroy_plan(p.rows_forward);
+        if (p.rows_inverse != nullptr) fftw_destroy_plan(p.rows_inverse);
+      }
+    }
+    pruned_.clear();
+    forward_ = inverse_ = columns_forward_ = columns_inverse_ = nullptr;
+    if (real_ != nullptr) fftw_free(real_);
+    if (spectrum_ != nullptr) fftw_free(spectrum_);
+    real_ = nullptr;
+    spectrum_ = nullptr;
+  }
+
+  unsigned flags_;  // FFTW_ESTIMATE or FFTW_MEASURE
+  double* real_ = nullptr;
+  fftw_complex* spectrum_ = nullptr;
+  fftw_plan forward_ = nullptr;
+  fftw_plan inverse_ = nullptr;
+  fftw_plan columns_forward_ = nullptr;  // in-place slow-index transforms of the half-spectrum
+  fftw_plan columns_inverse_ = nullptr;
+  std::vector<Pruned> pruned_;
+};
+
+}  // namespace
+
+std::unique_ptr<FftEngine> make_fftw_engine(int n_fast, int n_slow, FftPlanning planning) {
+  return std::make_unique<FftwEngine>(n_fast, n_slow, planning);
+}
+
+}  // namespace rollcontact::elastic::detail
+
+#else
+
+namespace rollcontact::elastic::detail {
+
+std::unique_ptr<FftEngine> make_fftw_engine(int /*n_fast*/, int /*n_slow*/,
+                                            FftPlanning /*planning*/) {
+  throw NotSupportedError("the FFTW backend was not built");
+}
+
+}  // namespace rollcontact::elastic::detail
+
+#endif

@@ -1,0 +1,46 @@
+#pragma once
+// Closed-form influence coefficients of piecewise-constant tractions on a half-space
+// (Boussinesq–Cerruti, spec/physics.md §3.2) and their tabulation on a grid (kernels).
+
+#include <vector>
+
+#include "rollcontact/grid.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::elastic {
+
+/// Displacement component i due to traction component j. C_nx = −C_xn, C_ny = −C_yn, C_yx = C_xy.
+enum class Component { nn, xx, yy, xy, xn, yn, nx, ny, yx };
+
+/// C_ij for an observation-minus-source offset (ox, oy) [mm] on elements of size dx × dy [mm],
+/// WITHOUT the factor 1/G: u_i = (1/G) Σ C_ij p_j. Returns mm (displacement per N/mm² times G).
+double influence_coefficient(Component c, double ox, double oy, double dx, double dy, double nu,
+                             double k);
+
+/// Coefficients of one component for every grid offset (dix, diy), dix ∈ [−(mx−1), mx−1],
+/// diy ∈ [−(my−1), my−1], already divided by G: u_I = Σ_J kernel(ix_I−ix_J, iy_I−iy_J) p_J.
+/// shift_x/shift_y move the observation point (rolling: previous-time displacement, §3.2).
+class Kernel {
+ public:
+  Kernel() = default;
+  Kernel(int mx, int my);
+  int mx() const noexcept { return mx_; }
+  int my() const noexcept { return my_; }
+  double& at(int dix, int diy) noexcept { return data_[index(dix, diy)]; }
+  double at(int dix, int diy) const noexcept { return data_[index(dix, diy)]; }
+  const std::vector<double>& data() const noexcept { return data_; }
+
+ private:
+  std::size_t index(int dix, int diy) const noexcept {
+    return static_cast<std::size_t>(dix + mx_ - 1) +
+           static_cast<std::size_t>(2 * mx_ - 1) * static_cast<std::size_t>(diy + my_ - 1);
+  }
+  int mx_ = 0, my_ = 0;
+  std::vector<double> data_;
+};
+
+/// Tabulates component c of the influence matrix for the grid and material (divided by G).
+Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                   double shift_x = 0.0, double shift_y = 0.0);
+
+}  // namespace rollcontact::elastic

@@ -1,0 +1,81 @@
+#include "io/run_input.hpp"
+
+#include <map>
+#include <sstream>
+
+#include "io/atomic_file.hpp"
+#include "io/inp_reader.hpp"
+#include "io/json_writer.hpp"
+#include "io/report_writer.hpp"
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::io {
+
+RunResult run_problems(const std::vector<Problem>& problems, const std::string& input_name,
+                       const std::filesystem::path& output_stem, const RunOptions& options) {
+  RunResult result;
+  std::ostringstream report;
+  write_report_banner(report);
+  nlohmann::json cases = nlohmann::json::array();
+  std::map<int, State> states;  // one State per result element (REID)
+
+  for (std::size_t k = 0; k < problems.size(); ++k) {
+    const Problem& problem = problems[k];
+    CaseOutcome outcome;
+    outcome.problem = problem;
+    if (problem.digits.r == 2 || problem.digits.r == 3) {
+      outcome.skipped = true;
+    } else {
+      auto [it, inserted] = states.try_emplace(problem.result_element, options.solve);
+      try {
+        if (!problem.source.case_error.empty()) throw ProblemError(problem.source.case_error);
+        outcome.solution = solve(problem, it->second);
+        outcome.solved = true;
+        // The reader's consistency overrides are part of what the user must see for this case.
+        auto& warnings = outcome.solution.warnings;
+        warnings.insert(warnings.begin(), problem.source.warnings.begin(),
+                        problem.source.warnings.end());
+        if (!outcome.solution.solver.converged) ++result.failed;
+      } catch (const NotSupportedError& e) {
+        outcome.error = e.what();
+      } catch (const ProblemError& e) {
+        outcome.error = e.what();
+      }
+      if (!outcome.error.empty()) {
+        ++result.failed;
+        const SourceInfo& src = problem.source;
+        if (!src.file.empty())
+          outcome.error = src.file + ":" + std::to_string(src.first_line) + ": " + outcome.error;
+      }
+    }
+    if (outcome.solved) {
+      write_case_report(report, problem, outcome.solution);
+      cases.push_back(case_to_json(problem, outcome.solution));
+    } else if (!outcome.skipped) {
+      write_case_error(report, problem, outcome.error);
+      cases.push_back(case_error_to_json(problem, outcome.error));
+    }
+    if (options.on_case) options.on_case(outcome, k, problems.size());
+    result.cases.push_back(std::move(outcome));
+  }
+  write_report_end(report);
+
+  result.report_path = output_stem;
+  result.report_path += ".out";
+  result.json_path = output_stem;
+  result.json_path += ".json";
+  write_file_atomically(result.report_path, report.str());
+  write_file_atomically(result.json_path,
+                        results_document(input_name, std::move(cases)).dump(2) + "\n");
+  return result;
+}
+
+RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
+  const std::vector<Problem> problems = read_inp_file(input);
+  std::filesystem::path dir = options.output_dir.empty() ? input.parent_path() : options.output_dir;
+  if (!options.output_dir.empty()) std::filesystem::create_directories(dir);
+  const std::filesystem::path stem = dir / input.stem();
+  return run_problems(problems, input.filename().string(), stem, options);
+}
+
+}  // namespace rollcontact::io

@@ -1,0 +1,54 @@
+#pragma once
+// Approximate inverses of the normal influence operator, used to precondition NormCG.
+
+#include <complex>
+#include <memory>
+#include <vector>
+
+#include "elastic/fft_backend.hpp"
+#include "rollcontact/grid.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::normal {
+
+/// z ≈ A⁻¹ r for residuals r that vanish outside the current contact set.
+class Preconditioner {
+ public:
+  virtual ~Preconditioner() = default;
+  /// r and z have grid.size() entries; entries of r outside the contact set are zero on input,
+  /// z is overwritten on the whole grid (callers mask it).
+  virtual void apply(const double* r, double* z) = 0;
+};
+
+/// Identity (unpreconditioned CG), for tests and comparison.
+class IdentityPreconditioner final : public Preconditioner {
+ public:
+  explicit IdentityPreconditioner(std::size_t n) : n_(n) {}
+  void apply(const double* r, double* z) override;
+
+ private:
+  std::size_t n_;
+};
+
+/// Circulant ("Strang") approximate inverse: the influence coefficients C_nn are wrapped onto a
+/// periodic nx × ny grid (nx ≥ mx, ny ≥ my, FFT-friendly sizes, no zero padding), transformed
+/// once, and the inverse symbol is applied by one FFT pair of a quarter of the size of the padded
+/// product. This follows the idea of Vollebregt (2014, J. Comput. Phys. 257): an FFT-based
+/// approximate inverse whose cost is small next to the product A·p.
+class CirculantPreconditioner final : public Preconditioner {
+ public:
+  CirculantPreconditioner(const Grid& grid, const CombinedMaterial& material,
+                          FftBackendKind backend, FftPlanning planning = FftPlanning::Estimate);
+  void apply(const double* r, double* z) override;
+  int nx() const noexcept { return nx_; }
+  int ny() const noexcept { return ny_; }
+
+ private:
+  int mx_, my_, nx_, ny_;
+  std::unique_ptr<elastic::FftEngine> engine_;
+  std::vector<double> inverse_symbol_;  // real, per half-spectrum entry, includes 1/(nx ny)
+  std::vector<double> work_;
+  std::vector<std::complex<double>> spectrum_;
+};
+
+}  // namespace rollcontact::normal

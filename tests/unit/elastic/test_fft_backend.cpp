@@ -1,0 +1,167 @@
+// FFT engines: agreement with a direct DFT, round trips, row pruning, factory behaviour.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+#include <string_view>
+#include <vector>
+
+#include "backends.hpp"
+#include "elastic/fft_backend.hpp"
+#include "rollcontact/errors.hpp"
+#include "rollcontact/version.hpp"
+
+namespace rollcontact::elastic {
+namespace {
+
+using Complex = std::complex<double>;
+
+std::vector<double> random_real(std::size_t n, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> dist(-1.0, 1.0);
+  std::vector<double> v(n);
+  for (double& x : v) x = dist(gen);
+  return v;
+}
+
+/// Direct 2-D DFT half-spectrum X(kf, ks) = Σ x(i, j) e^{−2πi(kf i/nf + ks j/ns)}.
+std::vector<Complex> direct_dft(const std::vector<double>& x, int nf, int ns) {
+  const int half = nf / 2 + 1;
+  std::vector<Complex> out(static_cast<std::size_t>(half * ns));
+  for (int ks = 0; ks < ns; ++ks) {
+    for (int kf = 0; kf < half; ++kf) {
+      Complex sum = 0;
+      for (int j = 0; j < ns; ++j) {
+        for (int i = 0; i < nf; ++i) {
+          // Reduce the phase modulo 1 first to keep the reference accurate.
+          const long long num =
+              static_cast<long long>(kf) * i * ns + static_cast<long long>(ks) * j * nf;
+          const double phase = -2.0 * std::numbers::pi *
+                               static_cast<double>(num % (static_cast<long long>(nf) * ns)) /
+                               (nf * ns);
+          sum += x[static_cast<std::size_t>(i + nf * j)] * std::polar(1.0, phase);
+        }
+      }
+      out[static_cast<std::size_t>(kf + half * ks)] = sum;
+    }
+  }
+  return out;
+}
+
+class FftEngineTest : public ::testing::TestWithParam<FftBackendKind> {};
+
+TEST_P(FftEngineTest, ForwardMatchesDirectDft) {
+  for (const auto& [nf, ns] : {std::pair{8, 6}, std::pair{9, 5}, std::pair{1, 7}, std::pair{6, 1},
+                               std::pair{15, 14}, std::pair{1, 1}, std::pair{2, 3}}) {
+    auto engine = make_fft_engine(GetParam(), nf, ns);
+    EXPECT_EQ(engine->n_fast(), nf);
+    EXPECT_EQ(engine->n_slow(), ns);
+    EXPECT_EQ(engine->spectrum_size(), static_cast<std::size_t>((nf / 2 + 1) * ns));
+    const std::vector<double> x = random_real(engine->real_size(), 1u + static_cast<unsigned>(nf));
+    std::vector<Complex> got(engine->spectrum_size());
+    engine->forward(x.data(), got.data());
+    const std::vector<Complex> expected = direct_dft(x, nf, ns);
+    // Entries are sums of nf·ns terms of size ≤ 1: round-off ~ 1e-16·√(nf ns)·log(nf ns).
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      EXPECT_NEAR(std::abs(got[i] - expected[i]), 0.0, 1e-12) << nf << "x" << ns << " at " << i;
+    }
+  }
+}
+
+TEST_P(FftEngineTest, RoundTripIsUnnormalised) {
+  for (const auto& [nf, ns] : {std::pair{30, 18}, std::pair{25, 27}, std::pair{1, 40},
+                               std::pair{64, 1}, std::pair{11, 13}}) {
+    auto engine = make_fft_engine(GetParam(), nf, ns);
+    const std::vector<double> x = random_real(engine->real_size(), 7u);
+    std::vector<Complex> spectrum(engine->spectrum_size());
+    std::vector<double> back(engine->real_size());
+    engine->forward(x.data(), spectrum.data());
+    const std::vector<Complex> spectrum_copy = spectrum;
+    engine->inverse(spectrum.data(), back.data());
+    EXPECT_EQ(spectrum, spectrum_copy) << "inverse() must not modify its input";
+    const double n = static_cast<double>(nf) * ns;
+    for (std::size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(back[i] / n, x[i], 1e-14);
+  }
+}
+
+TEST_P(FftEngineTest, InverseOfSingleFrequency) {
+  // c2r of a single spectral line gives a cosine: fixes the sign convention of the inverse.
+  const int nf = 12, ns = 10;
+  auto engine = make_fft_engine(GetParam(), nf, ns);
+  std::vector<Complex> spectrum(engine->spectrum_size(), 0.0);
+  spectrum[static_cast<std::size_t>(3 + (nf / 2 + 1) * 2)] = Complex(0.0, 1.0);  // kf = 3, ks = 2
+  std::vector<double> out(engine->real_size());
+  engine->inverse(spectrum.data(), out.data());
+  for (int j = 0; j < ns; ++j) {
+    for (int i = 0; i < nf; ++i) {
+      const double phase = 2 * std::numbers::pi * (3.0 * i / nf + 2.0 * j / ns);
+      // Hermitian completion doubles the line: 2·Re(i·e^{iφ}) = −2 sin φ.
+      EXPECT_NEAR(out[static_cast<std::size_t>(i + nf * j)], -2 * std::sin(phase), 1e-13);
+    }
+  }
+}
+
+TEST_P(FftEngineTest, PrunedRowsBehaveAsZeroPadding) {
+  const int nf = 20, ns = 18, rows = 7;
+  auto engine = make_fft_engine(GetParam(), nf, ns);
+  std::vector<double> x = random_real(engine->real_size(), 3u);
+  std::vector<double> padded = x;
+  std::fill(padded.begin() + rows * nf, padded.end(), 0.0);
+  std::vector<Complex> expected(engine->spectrum_size());
+  engine->forward(padded.data(), expected.data());
+
+  std::copy(x.begin(), x.end(), engine->real_data());  // garbage in the rows declared zero
+  engine->execute_forward(rows);
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(std::abs(engine->spectrum_data()[i] - expected[i]), 0.0, 1e-13);
+  }
+  engine->execute_inverse(rows);
+  for (int j = 0; j < rows; ++j) {
+    for (int i = 0; i < nf; ++i) {
+      const std::size_t k = static_cast<std::size_t>(i + nf * j);
+      EXPECT_NEAR(engine->real_data()[k] / (nf * ns), x[k], 1e-14);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, FftEngineTest,
+                         ::testing::ValuesIn(testing::available_backends()),
+                         testing::backend_param_name);
+
+TEST(FftFactory, DefaultResolvesToConfiguredBackend) {
+  auto engine = make_fft_engine(FftBackendKind::Default, 4, 4);
+  EXPECT_EQ(engine->name(), std::string_view(default_fft_backend));
+  EXPECT_TRUE(fft_backend_available(FftBackendKind::Default));
+  EXPECT_TRUE(fft_backend_available(FftBackendKind::Kiss));
+  EXPECT_EQ(fft_backend_available(FftBackendKind::Fftw), ROLLCONTACT_HAVE_FFTW != 0);
+}
+
+TEST(FftFactory, RejectsUnavailableBackendAndBadSizes) {
+  if (!fft_backend_available(FftBackendKind::Fftw)) {
+    EXPECT_THROW(make_fft_engine(FftBackendKind::Fftw, 4, 4), NotSupportedError);
+  }
+  EXPECT_THROW(make_fft_engine(FftBackendKind::Kiss, 0, 4), ProblemError);
+}
+
+TEST(FftFactory, GoodSizesAreSmoothAndMinimal) {
+  EXPECT_EQ(good_fft_size(1), 1);
+  EXPECT_EQ(good_fft_size(7), 8);
+  EXPECT_EQ(good_fft_size(1149), 1152);
+  EXPECT_EQ(good_fft_size(1293), 1296);
+  EXPECT_EQ(good_fft_size(1125), 1125);
+  for (int n = 1; n < 3000; ++n) {
+    const int g = good_fft_size(n);
+    ASSERT_GE(g, n);
+    int m = g;
+    for (int f : {2, 3, 5}) {
+      while (m % f == 0) m /= f;
+    }
+    ASSERT_EQ(m, 1) << n;
+  }
+}
+
+}  // namespace
+}  // namespace rollcontact::elastic
