@@ -1,0 +1,123 @@
+// `rollcontact run` and `rollcontact example`.
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "commands.hpp"
+#include "io/atomic_file.hpp"
+#include "io/builtin_example.hpp"
+#include "io/report_writer.hpp"
+#include "io/run_input.hpp"
+
+namespace rollcontact::cli {
+
+namespace {
+
+using io::CaseOutcome;
+
+FftBackendKind parse_backend(const std::string& name) {
+  if (name == "fftw") return FftBackendKind::Fftw;
+  if (name == "kiss") return FftBackendKind::Kiss;
+  return FftBackendKind::Default;
+}
+
+/// One console line per case: what a user looks for first.
+void print_case_summary(const CaseOutcome& c) {
+  const auto& p = c.problem;
+  if (c.skipped) {
+    fmt::print("case {:>4}: skipped (R={})\n", p.case_number, p.digits.r);
+    return;
+  }
+  if (!c.solved) {
+    fmt::print("case {:>4}: ERROR {}\n", p.case_number, c.error);
+    return;
+  }
+  const auto& s = c.solution;
+  const auto& t = s.totals;
+  fmt::print(
+      "case {:>4}: FN {:.5g} N  FX {:.5g} N  FY {:.5g} N  PEN {:.4e} mm  PMAX {:.4g} N/mm2  "
+      "contact {}/{} elements ({:.4g} mm2)  {}\n",
+      p.case_number, t.fn, t.fx, t.fy, t.pen, t.pmax, s.statistics.ncon, s.statistics.npot,
+      t.contact_area,
+      s.solver.converged ? fmt::format("converged, {} CG iterations", s.solver.normal_iterations)
+                         : "NOT CONVERGED: " + s.solver.message);
+}
+
+struct RunSettings {
+  std::string input;
+  std::string output_dir;
+  std::string backend = "default";
+  bool measure = false;
+  bool quiet = false;
+};
+
+int run_job(const std::filesystem::path& input, const RunSettings& settings, bool show_picture) {
+  io::RunOptions options;
+  options.output_dir = settings.output_dir;
+  options.solve.fft = parse_backend(settings.backend);
+  options.solve.fft_planning = settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
+  const bool quiet = settings.quiet;
+  options.on_case = [quiet, show_picture](const CaseOutcome& c, std::size_t k, std::size_t count) {
+    if (quiet) return;
+    print_case_summary(c);
+    if (show_picture && c.solved) {
+      std::ostringstream pic;
+      io::write_element_division(pic, c.solution, c.problem.digits.t);
+      fmt::print("{}\n", pic.str());
+    }
+    if (count > 20 && (k + 1) % 20 == 0) fmt::print(stderr, "  ... {}/{} cases\n", k + 1, count);
+  };
+  const auto result = io::run_input_file(input, options);
+  if (!quiet)
+    fmt::print("wrote {} and {}\n", result.report_path.string(), result.json_path.string());
+  return result.failed == 0 ? exit_ok : exit_case_failed;
+}
+
+void add_solver_options(CLI::App* cmd, RunSettings& s) {
+  cmd->add_option("--fft", s.backend, "FFT backend")
+      ->check(CLI::IsMember({"default", "fftw", "kiss"}))
+      ->capture_default_str();
+  cmd->add_flag("--fft-measure", s.measure,
+                "plan FFTs with FFTW_MEASURE (faster transforms, seconds of planning per grid)");
+  cmd->add_flag("-q,--quiet", s.quiet, "no console output");
+}
+
+}  // namespace
+
+CommandRunner add_run_command(CLI::App& app) {
+  auto settings = std::make_shared<RunSettings>();
+  auto* cmd = app.add_subcommand(
+      "run", "Solve every case of a CONTACT .inp file; writes FILE.out (report) and FILE.json");
+  cmd->add_option("FILE", settings->input, "input file (.inp)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output-dir", settings->output_dir,
+                  "folder for the outputs (default: next to FILE)");
+  add_solver_options(cmd, *settings);
+  return [settings] { return run_job(settings->input, *settings, false); };
+}
+
+CommandRunner add_example_command(CLI::App& app) {
+  auto settings = std::make_shared<RunSettings>();
+  settings->output_dir = "rollcontact-example";
+  auto* cmd = app.add_subcommand(
+      "example", "Write the built-in example (wheel on rail, 80 kN) as example.inp and solve it");
+  cmd->add_option("-o,--output-dir", settings->output_dir, "folder for example.inp and outputs")
+      ->capture_default_str();
+  add_solver_options(cmd, *settings);
+  return [settings] {
+    std::filesystem::create_directories(settings->output_dir);
+    const auto path = std::filesystem::path(settings->output_dir) / "example.inp";
+    io::write_file_atomically(path, std::string(io::builtin_example_inp));
+    if (!settings->quiet) fmt::print("built-in example: {}\n", path.string());
+    RunSettings local = *settings;
+    local.output_dir.clear();  // outputs next to example.inp
+    return run_job(path, local, true);
+  };
+}
+
+}  // namespace rollcontact::cli

@@ -1,0 +1,26 @@
+#pragma once
+// Subcommands of the rollcontact CLI. Each add_*_command registers its options on `app` and
+// returns the function main() calls when that subcommand was given; it returns the exit status.
+//
+// Exit status: 0 all cases solved and converged; 1 some case failed (not supported, inadmissible
+// data, no convergence) or a validation comparison failed; 2 the input could not be read (nothing
+// written); 3 internal error.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace rollcontact::cli {
+
+inline constexpr int exit_ok = 0;
+inline constexpr int exit_case_failed = 1;
+inline constexpr int exit_input_error = 2;
+inline constexpr int exit_internal = 3;
+
+using CommandRunner = std::function<int()>;
+
+/// `rollcontact run FILE.inp`: solve and write FILE.out / FILE.json.
+CommandRunner add_run_command(CLI::App& app);
+/// `rollcontact example`: the built-in default example.
+CommandRunner add_example_command(CLI::App& app);
+
+}  // namespace rollcontact::cli
