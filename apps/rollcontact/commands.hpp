@@ -22,5 +22,9 @@ using CommandRunner = std::function<int()>;
 CommandRunner add_run_command(CLI::App& app);
 /// `rollcontact example`: the built-in default example.
 CommandRunner add_example_command(CLI::App& app);
+/// `rollcontact convert IN OUT`: .inp <-> TOML case file (direction from the extensions).
+CommandRunner add_convert_command(CLI::App& app);
+/// `rollcontact validate DIR`: run the examples of DIR and compare with CONTACT's .ref_out.
+CommandRunner add_validate_command(CLI::App& app);
 
 }  // namespace rollcontact::cli

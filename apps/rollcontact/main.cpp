@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   };
   add(add_run_command);
   add(add_example_command);
+  add(add_convert_command);
+  add(add_validate_command);
 
   CLI11_PARSE(app, argc, argv);
 

@@ -33,6 +33,20 @@ struct HertzReport {
   double scale = 1.0;         ///< potential contact / Hertz area
 };
 
+/// Rolling direction, step and velocity actually used (after CONTACT's adjustments).
+struct EffectiveKinematics {
+  double chi = 0.0;    ///< rolling direction [rad]
+  double dq = 1.0;     ///< rolling step [mm] (T=0,1: 1)
+  double veloc = 1.0;  ///< rolling velocity [mm/s] (T=0,1: 1)
+  double dt = 1.0;     ///< time step dq/veloc [s]
+};
+
+/// Sensitivities of the forces (spec/outputs.md §3.4); zero = not computed.
+struct Sensitivities {
+  double dfn_dpen = 0.0;
+  double dfx_dksi = 0.0, dfx_deta = 0.0, dfy_dksi = 0.0, dfy_deta = 0.0;  ///< of F/(μ FN)
+};
+
 /// Totals (spec/outputs.md §4). Forces act on body 1.
 struct Totals {
   double fn = 0.0, fx = 0.0, fy = 0.0;  ///< [N]
@@ -76,6 +90,8 @@ struct Solution {
   std::vector<double> un, ux, uy;  ///< displacement differences [mm]
   std::vector<double> sx, sy;      ///< slip (velocity / δq, or distance for T=1)
   std::vector<ElementState> state;
+  EffectiveKinematics kinematics;
+  Sensitivities sensitivities;
   Totals totals;
   Statistics statistics;
   SolverReport solver;

@@ -7,6 +7,7 @@
 #include "io/inp_reader.hpp"
 #include "io/json_writer.hpp"
 #include "io/report_writer.hpp"
+#include "io/toml_case_reader.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::io {
@@ -71,7 +72,9 @@ RunResult run_problems(const std::vector<Problem>& problems, const std::string& 
 }
 
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
-  const std::vector<Problem> problems = read_inp_file(input);
+  // TOML case files (docs/case-files.md) by extension; everything else is CONTACT .inp.
+  const std::vector<Problem> problems =
+      input.extension() == ".toml" ? read_toml_file(input) : read_inp_file(input);
   std::filesystem::path dir = options.output_dir.empty() ? input.parent_path() : options.output_dir;
   if (!options.output_dir.empty()) std::filesystem::create_directories(dir);
   const std::filesystem::path stem = dir / input.stem();

@@ -1,15 +1,22 @@
+// solve(): one module-3 case from Problem to Solution — geometry, normal problem, tangential
+// problem (with the force iteration and the Panagiotopoulos loop) and the totals.
+
 #include "rollcontact/solve.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "elastic/material.hpp"
 #include "geometry/discretisation.hpp"
 #include "geometry/hertz.hpp"
 #include "normal/normal_solver.hpp"
 #include "rollcontact/errors.hpp"
+#include "solve/force_iteration.hpp"
 #include "solve/state_impl.hpp"
+#include "tangential/kinematics.hpp"
 
 namespace rollcontact {
 
@@ -19,19 +26,393 @@ namespace {
   throw NotSupportedError("not supported yet: " + what);
 }
 
+using Field = std::vector<double>;
+
+/// Fields of the previous case mapped onto the current grid (same element size, integer offset);
+/// zero where the old grid did not reach (physics.md §2 "Sequences").
+struct PreviousFields {
+  bool present = false;
+  Field px, py, pn;
+};
+
+PreviousFields map_previous(const Solution* prev, const Grid& grid) {
+  PreviousFields out;
+  const std::size_t n = grid.size();
+  out.px.assign(n, 0.0);
+  out.py.assign(n, 0.0);
+  out.pn.assign(n, 0.0);
+  if (prev == nullptr || prev->pn.empty()) return out;
+  const Grid& old = prev->grid;
+  if (std::abs(old.dx - grid.dx) > 1e-6 * grid.dx || std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
+    return out;
+  const long ox = std::lround((grid.xl - old.xl) / grid.dx);
+  const long oy = std::lround((grid.yl - old.yl) / grid.dy);
+  for (int iy = 0; iy < grid.my; ++iy) {
+    const long jy = iy + oy;
+    if (jy < 0 || jy >= old.my) continue;
+    for (int ix = 0; ix < grid.mx; ++ix) {
+      const long jx = ix + ox;
+      if (jx < 0 || jx >= old.mx) continue;
+      const std::size_t j = static_cast<std::size_t>(jx + old.mx * jy);
+      const std::size_t i = grid.index(ix, iy);
+      out.px[i] = prev->px[j];
+      out.py[i] = prev->py[j];
+      out.pn[i] = prev->pn[j];
+    }
+  }
+  out.present = true;
+  return out;
+}
+
+double rms_change(const Field& a, const Field& b) {
+  double s = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(s);
+}
+
+double norm(const Field& a) {
+  double s = 0.0;
+  for (double v : a) s += v * v;
+  return std::sqrt(s);
+}
+
+/// Everything the normal and tangential sub-solves of one case share.
+class CaseSolver {
+ public:
+  CaseSolver(const Problem& problem, State::Impl& st, Solution& sol)
+      : problem_(problem), st_(st), sol_(sol), grid_(sol.grid) {}
+
+  void run();
+
+ private:
+  void solve_normal(const Field& px, const Field& py);
+  tangential::TangentialResult solve_tangential(double cksi, double ceta, double cphi,
+                                                const Field* px0, const Field* py0);
+  void compute_totals(const tangential::TangentialResult* tang);
+
+  const Problem& problem_;
+  State::Impl& st_;
+  Solution& sol_;
+  const Grid& grid_;
+  bool coupled_ = false;
+  double mu_ = 0.0;
+  PreviousFields prev_;
+  TangentialOperators* tops_ = nullptr;
+  std::vector<std::string> notes_;
+};
+
+void CaseSolver::solve_normal(const Field& px, const Field& py) {
+  const std::size_t n = grid_.size();
+  const bool force_given = problem_.digits.n == 1;
+  const double load_value = force_given ? problem_.kinematics.fn : problem_.kinematics.pen;
+  if (force_given && !(load_value > 0.0))
+    throw ProblemError(fmt::format("normal force FN = {} must be positive", load_value));
+  NormalOperators& ops = st_.normal_operators(grid_, sol_.material);
+
+  // h* = h + u_n(p_t): the normal displacement due to the current tangential tractions (K ≠ 0).
+  Field h_star = sol_.h;
+  if (coupled_ && tops_ != nullptr) {
+    Field un_t(n);
+    const double* in[2] = {px.data(), py.data()};
+    double* out[1] = {un_t.data()};
+    tops_->nt->apply(in, out);
+    for (std::size_t i = 0; i < n; ++i)
+      if (h_star[i] < geometry::excluded_distance) h_star[i] += un_t[i];
+  }
+
+  // Starting pressure: the current one in an outer loop, else the Hertz solution for Hertzian
+  // geometries (physics.md §7.1), else the geometric estimate inside the solver.
+  Field start;
+  const Field* initial = nullptr;
+  if (!sol_.pn.empty()) {
+    initial = &sol_.pn;
+  } else if (sol_.hertz.present) {
+    start.assign(n, 0.0);
+    for (int iy = 0; iy < grid_.my; ++iy)
+      for (int ix = 0; ix < grid_.mx; ++ix)
+        start[grid_.index(ix, iy)] =
+            geometry::hertz_pressure(sol_.hertz, grid_.x_centre(ix), grid_.y_centre(iy));
+    if (std::any_of(start.begin(), start.end(), [](double v) { return v > 0.0; })) initial = &start;
+  }
+
+  normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner);
+  normal::NormalSettings settings;
+  settings.eps = problem_.solver.eps;
+  settings.max_iterations = problem_.solver.maxgs;
+  normal::NormalResult r =
+      solver.solve(h_star, force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach,
+                   load_value, settings, initial, sol_.material.nu, sol_.material.g);
+  sol_.pn = std::move(r.pn);
+  sol_.totals.pen = r.pen;
+  sol_.solver.normal_iterations += r.iterations;
+  sol_.solver.normal_active_set_changes += r.set_changes;
+  sol_.solver.normal_products += r.products;
+  sol_.solver.normal_residual = r.residual;
+  if (!r.converged) {
+    sol_.solver.converged = false;
+    sol_.solver.message = r.message;
+  }
+}
+
+tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ceta, double cphi,
+                                                          const Field* px0, const Field* py0) {
+  using namespace tangential;
+  const std::size_t n = grid_.size();
+  const int t = problem_.digits.t;
+  TangentialSystem sys;
+  sys.grid = grid_;
+  sys.chi = sol_.kinematics.chi;
+  sys.a = tops_->view();
+  sys.contact.assign(n, 0);
+  sys.bound.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    sys.contact[i] = sol_.pn[i] > 0.0;
+    sys.bound[i] = mu_ * sol_.pn[i];
+  }
+  RigidShift w = rigid_shift(grid_, problem_, sol_.kinematics, cksi, ceta, cphi);
+  sys.bx = std::move(w.wx);
+  sys.by = std::move(w.wy);
+  if (coupled_) {
+    // Tangential displacement per step due to the pressure (C_tn, or (C − C′)_tn when steady).
+    Field ux(n), uy(n);
+    const double* in[1] = {sol_.pn.data()};
+    double* out[2] = {ux.data(), uy.data()};
+    tops_->tn->apply(in, out);
+    for (std::size_t i = 0; i < n; ++i) {
+      sys.bx[i] += ux[i];
+      sys.by[i] += uy[i];
+    }
+  }
+  if (t <= 2 && prev_.present) {
+    // Displacement of the same particles at the previous time.
+    Field ux(n), uy(n);
+    const double* in[3] = {prev_.px.data(), prev_.py.data(), prev_.pn.data()};
+    double* out[2] = {ux.data(), uy.data()};
+    tops_->prev->apply(in, out);
+    for (std::size_t i = 0; i < n; ++i) {
+      sys.bx[i] -= ux[i];
+      sys.by[i] -= uy[i];
+    }
+  }
+
+  TangentialSettings settings;
+  settings.eps = problem_.solver.eps;
+  settings.max_iterations = problem_.solver.maxgs;
+  TangentialSolverKind kind = select_solver(problem_.digits);
+  if (kind == TangentialSolverKind::SteadyGS) {
+    // SteadyGS needs a free trailing column (the inflow of the previous-time field).
+    const int trailing = std::cos(sys.chi) > 0.0 ? 0 : grid_.mx - 1;
+    bool blocked = false;
+    for (int iy = 0; iy < grid_.my && !blocked; ++iy)
+      blocked = sys.contact[grid_.index(trailing, iy)] != 0;
+    if (blocked) {
+      kind = TangentialSolverKind::ConvexGS;
+      notes_.push_back("contact in the trailing column: using ConvexGS instead of SteadyGS");
+    }
+  }
+  if (problem_.digits.g == 2 || problem_.digits.g == 3) {
+    if (problem_.solver.omega_h > 0.0) settings.omega_h = problem_.solver.omega_h;
+    if (problem_.solver.omega_s > 0.0) settings.omega_s = problem_.solver.omega_s;
+  }
+  switch (kind) {
+    case TangentialSolverKind::TangCG:
+      return solve_tang_cg(sys, settings, px0, py0);
+    case TangentialSolverKind::SteadyGS:
+      return solve_steady_gs(sys, settings, px0, py0);
+    default:
+      return solve_convex_gs(sys, settings, px0, py0);
+  }
+}
+
+void CaseSolver::run() {
+  const std::size_t n = grid_.size();
+  const ControlDigits& d = problem_.digits;
+  coupled_ = std::abs(sol_.material.k) >= 1e-6;
+  mu_ = problem_.friction.fstat;
+  sol_.kinematics = tangential::effective_kinematics(problem_, grid_, &notes_);
+
+  const Solution* prev =
+      d.p != 2 && st_.previous && !st_.previous->pn.empty() ? &*st_.previous : nullptr;
+  prev_ = map_previous(prev, grid_);
+  if (d.t >= 1) {
+    const auto& k = sol_.kinematics;
+    tops_ = &st_.tangential_operators(grid_, sol_.material, d.t, k.dq * std::cos(k.chi),
+                                      k.dq * std::sin(k.chi));
+  }
+
+  Field px(n, 0.0), py(n, 0.0);
+  // Warm start of the tangential tractions from the previous case on the same grid.
+  if (prev_.present && d.t >= 1) {
+    px = prev_.px;
+    py = prev_.py;
+  }
+  const int max_outer = coupled_ && d.t >= 1 ? std::max(1, problem_.solver.maxout) : 1;
+  tangential::TangentialResult tang;
+  ForceIterationResult creep{problem_.kinematics.cksi, problem_.kinematics.ceta, 0, true, {}, {}};
+  int outer = 0;
+  for (outer = 1; outer <= max_outer; ++outer) {
+    const Field pn_old = sol_.pn.empty() ? Field(n, 0.0) : sol_.pn, px_old = px, py_old = py;
+    // Johnson's process (MAXOUT = 1): the normal problem sees no tangential tractions.
+    solve_normal(max_outer > 1 ? px : Field(n, 0.0), max_outer > 1 ? py : Field(n, 0.0));
+    if (d.t == 0) break;
+    auto evaluate = [&](double cksi, double ceta) {
+      tang = solve_tangential(cksi, ceta, problem_.kinematics.cphi, &px, &py);
+      px = tang.px;
+      py = tang.py;
+      double fx = 0.0, fy = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        fx += tang.px[i];
+        fy += tang.py[i];
+      }
+      double fn = 0.0;
+      for (double v : sol_.pn) fn += v;
+      fn *= grid_.element_area();
+      const double scale = mu_ * fn > 0.0 ? 1.0 / (mu_ * fn) : 0.0;
+      return std::array<double, 2>{fx * grid_.element_area() * scale,
+                                   fy * grid_.element_area() * scale};
+    };
+    if (d.f == 0) {
+      evaluate(problem_.kinematics.cksi, problem_.kinematics.ceta);
+    } else {
+      ForceIterationInput in;
+      in.unknowns = d.f;
+      in.target_x = problem_.kinematics.fx_rel;
+      in.target_y = problem_.kinematics.fy_rel;
+      in.fixed_eta = problem_.kinematics.ceta;
+      const bool restart = d.i == 0 || d.i == 2 || !prev;
+      in.start_ksi = restart ? 1e-6 : prev->totals.creep_x + prev->totals.shift_x;
+      in.start_eta = d.f == 2 ? (restart ? 0.0 : prev->totals.creep_y + prev->totals.shift_y)
+                              : problem_.kinematics.ceta;
+      in.eps = problem_.solver.eps;
+      in.max_iterations = problem_.solver.maxnr;
+      creep = force_iteration(in, evaluate);
+      sol_.solver.newton_iterations += creep.iterations;
+      sol_.sensitivities.dfx_dksi = creep.jacobian[0];
+      sol_.sensitivities.dfx_deta = creep.jacobian[1];
+      sol_.sensitivities.dfy_dksi = creep.jacobian[2];
+      sol_.sensitivities.dfy_deta = creep.jacobian[3];
+      if (!creep.converged) {
+        sol_.solver.converged = false;
+        sol_.solver.message = creep.message;
+      }
+    }
+    sol_.solver.tangential_iterations += tang.iterations;
+    if (!tang.converged) {
+      sol_.solver.converged = false;
+      sol_.solver.message = tang.message;
+    }
+    if (max_outer == 1) break;
+    const double change =
+        std::sqrt(std::pow(rms_change(sol_.pn, pn_old), 2) + std::pow(rms_change(px, px_old), 2) +
+                  std::pow(rms_change(py, py_old), 2));
+    const double size =
+        std::sqrt(std::pow(norm(sol_.pn), 2) + std::pow(norm(px), 2) + std::pow(norm(py), 2));
+    if (change <= 5.0 * problem_.solver.eps * size) break;
+  }
+  if (outer > max_outer) {
+    outer = max_outer;
+    sol_.solver.converged = false;
+    sol_.solver.message = fmt::format(
+        "the normal-tangential (Panagiotopoulos) loop did not converge in MAXOUT = {} passes",
+        max_outer);
+  }
+  sol_.statistics.inorm = outer;
+  sol_.statistics.itang = d.t >= 1 ? outer : 0;
+
+  if (d.t >= 1) {
+    if (d.t == 1) {
+      sol_.totals.shift_x = creep.ksi;
+      sol_.totals.shift_y = creep.eta;
+    } else {
+      sol_.totals.creep_x = creep.ksi;
+      sol_.totals.creep_y = creep.eta;
+      sol_.totals.spin = problem_.kinematics.cphi;
+    }
+    compute_totals(&tang);
+  } else {
+    compute_totals(nullptr);
+  }
+  for (auto& note : notes_) sol_.warnings.push_back(std::move(note));
+}
+
+void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
+  const std::size_t n = grid_.size();
+  const double area = grid_.element_area();
+  Solution& s = sol_;
+  s.px = tang ? tang->px : Field(n, 0.0);
+  s.py = tang ? tang->py : Field(n, 0.0);
+  s.sx.assign(n, 0.0);
+  s.sy.assign(n, 0.0);
+  s.state.assign(n, ElementState::Exterior);
+  s.ux.assign(n, 0.0);
+  s.uy.assign(n, 0.0);
+  s.un.assign(n, 0.0);
+  if (tops_ != nullptr) {
+    const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
+    double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};
+    tops_->full->apply(in, out);
+  } else {
+    NormalOperators& ops = st_.normal_operators(grid_, s.material);
+    ops.product->apply(s.pn.data(), s.un.data());
+  }
+
+  Totals& t = s.totals;
+  Statistics& st = s.statistics;
+  st = Statistics{0, 0, 0, 0, 0, st.inorm, st.itang};
+  st.npot = static_cast<int>(n);
+  double energy = 0.0, power = 0.0;
+  t.fn = t.fx = t.fy = t.mz = t.pmax = 0.0;
+  const double dq = s.kinematics.dq;
+  for (int iy = 0; iy < grid_.my; ++iy) {
+    for (int ix = 0; ix < grid_.mx; ++ix) {
+      const std::size_t i = grid_.index(ix, iy);
+      t.fn += s.pn[i];
+      t.fx += s.px[i];
+      t.fy += s.py[i];
+      t.mz += grid_.x_centre(ix) * s.py[i] - grid_.y_centre(iy) * s.px[i];
+      energy += s.pn[i] * s.un[i] + s.px[i] * s.ux[i] + s.py[i] * s.uy[i];
+      if (s.pn[i] <= 0.0) continue;
+      ++st.ncon;
+      t.pmax = std::max(t.pmax, s.pn[i]);
+      if (tang) {
+        s.state[i] = tang->state[i];
+        // S per step [mm]; reported as relative slip S/δq (T=1: δq = 1, a distance).
+        power += tang->sx[i] * s.px[i] + tang->sy[i] * s.py[i];
+        s.sx[i] = tang->sx[i] / dq;
+        s.sy[i] = tang->sy[i] / dq;
+      } else {
+        s.state[i] = ElementState::Adhesion;  // CONTACT prints '*' without a tangential problem
+      }
+      if (s.state[i] == ElementState::Slip)
+        ++st.nslip;
+      else if (s.state[i] == ElementState::Adhesion)
+        ++st.nadh;
+    }
+  }
+  t.fn *= area;
+  t.fx *= area;
+  t.fy *= area;
+  t.mz *= area;
+  t.contact_area = st.ncon * area;
+  t.elastic_energy = 0.5e-3 * energy * area;                   // N·mm → J
+  t.frictional_power = 1e-3 * power * area / s.kinematics.dt;  // N·mm/s → W (T=1: J per step)
+}
+
 }  // namespace
 
 void check_supported(const Problem& problem) {
   const ControlDigits& d = problem.digits;
-  if (d.t != 0) not_supported(fmt::format("tangential problem T={}", d.t));
   if (d.b != 0) not_supported(fmt::format("normal method B={}", d.b));
   if (d.m != 0) not_supported(fmt::format("material model M={}", d.m));
   if (d.c == 3 || d.c == 4 || d.c == 9)
     not_supported(fmt::format("influence coefficients C={}", d.c));
   if (d.s != 0) not_supported(fmt::format("subsurface stresses S={}", d.s));
   if (d.h != 0) not_supported(fmt::format("temperature H={}", d.h));
-  if (d.e != 0 && d.e != 1) not_supported(fmt::format("extra rigid slip E={}", d.e));
+  if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
   if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
+  if (d.t >= 1 && problem.friction.law != 0)
+    not_supported(fmt::format("friction law L={}", problem.friction.law));
+  if (d.g == 5) not_supported("solver GDsteady G=5");
   if (problem.potential.ipotcn == -6) not_supported("SDEC potential contact IPOTCN=-6");
 }
 
@@ -47,78 +428,10 @@ Solution solve(const Problem& problem, State& state) {
   sol.hertz = disc.hertz;
   sol.h = std::move(disc.h);
 
-  const Grid& grid = sol.grid;
-  const std::size_t n = grid.size();
-  const bool force_given = problem.digits.n == 1;
-  const double load_value = force_given ? problem.kinematics.fn : problem.kinematics.pen;
-  if (force_given && !(load_value > 0.0))
-    throw ProblemError(fmt::format("normal force FN = {} must be positive", load_value));
+  CaseSolver(problem, st, sol).run();
 
-  NormalOperators& ops = st.normal_operators(grid, sol.material);
-
-  // Starting pressure: the Hertz solution for Hertzian geometries (physics.md §7.1), the previous
-  // case's pressure on the same grid when asked for (I digit), otherwise the geometric estimate.
-  std::vector<double> start;
-  const std::vector<double>* initial = nullptr;
-  if (problem.digits.i >= 1 && st.previous && st.previous->grid.mx == grid.mx &&
-      st.previous->grid.my == grid.my && !st.previous->pn.empty()) {
-    start = st.previous->pn;
-    initial = &start;
-  } else if (sol.hertz.present) {
-    start.assign(n, 0.0);
-    for (int iy = 0; iy < grid.my; ++iy)
-      for (int ix = 0; ix < grid.mx; ++ix)
-        start[grid.index(ix, iy)] =
-            geometry::hertz_pressure(sol.hertz, grid.x_centre(ix), grid.y_centre(iy));
-    if (std::any_of(start.begin(), start.end(), [](double v) { return v > 0.0; })) initial = &start;
-  }
-
-  normal::NormalSolver solver(grid, *ops.product, ops.kernel, *ops.preconditioner);
-  normal::NormalSettings settings;
-  settings.eps = problem.solver.eps;
-  settings.max_iterations = problem.solver.maxgs;
-  normal::NormalResult nres =
-      solver.solve(sol.h, force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach,
-                   load_value, settings, initial, sol.material.nu, sol.material.g);
-
-  sol.pn = std::move(nres.pn);
-  sol.un = std::move(nres.un);
-  sol.px.assign(n, 0.0);
-  sol.py.assign(n, 0.0);
-  sol.ux.assign(n, 0.0);
-  sol.uy.assign(n, 0.0);
-  sol.sx.assign(n, 0.0);
-  sol.sy.assign(n, 0.0);
-  sol.state.assign(n, ElementState::Exterior);
-
-  Totals& t = sol.totals;
-  Statistics& s = sol.statistics;
-  s.npot = static_cast<int>(n);
-  double energy = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (sol.pn[i] > 0.0) {
-      // Without a tangential problem every contact element counts as adhesion (CONTACT's '*').
-      sol.state[i] = ElementState::Adhesion;
-      ++s.ncon;
-      t.pmax = std::max(t.pmax, sol.pn[i]);
-      energy += sol.pn[i] * sol.un[i];
-    }
-  }
-  s.nadh = s.ncon;
-  s.inorm = 1;
-  t.fn = nres.fn;
-  t.pen = nres.pen;
-  t.contact_area = s.ncon * grid.element_area();
-  t.elastic_energy = 0.5e-3 * energy * grid.element_area();  // N·mm → J
-
-  sol.solver.converged = nres.converged;
-  sol.solver.message = nres.message;
-  sol.solver.normal_iterations = nres.iterations;
-  sol.solver.normal_active_set_changes = nres.set_changes;
-  sol.solver.normal_products = nres.products;
-  sol.solver.normal_residual = nres.residual;
-
-  st.previous = sol;
+  // P=3 keeps the stored previous state; otherwise this case becomes the previous one.
+  if (problem.digits.p != 3 || !st.previous) st.previous = sol;
   return sol;
 }
 

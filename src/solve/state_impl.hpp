@@ -4,12 +4,20 @@
 #include <memory>
 #include <optional>
 
+#include "elastic/block_convolution.hpp"
 #include "elastic/convolution.hpp"
 #include "elastic/influence.hpp"
 #include "normal/preconditioner.hpp"
 #include "rollcontact/solve.hpp"
+#include "tangential/tangential_system.hpp"
 
 namespace rollcontact {
+
+inline bool same_grid_and_material(const Grid& a, const Grid& b, const CombinedMaterial& m,
+                                   const CombinedMaterial& n) noexcept {
+  return a.mx == b.mx && a.my == b.my && a.dx == b.dx && a.dy == b.dy && m.g == n.g &&
+         m.nu == n.nu && m.k == n.k;
+}
 
 /// The normal influence operator of one grid/material, with its FFT plans and preconditioner.
 struct NormalOperators {
@@ -18,20 +26,42 @@ struct NormalOperators {
   elastic::Kernel kernel;
   std::unique_ptr<elastic::FftConvolution> product;
   std::unique_ptr<normal::CirculantPreconditioner> preconditioner;
+};
 
-  bool matches(const Grid& g, const CombinedMaterial& m) const noexcept {
-    return g.mx == grid.mx && g.my == grid.my && g.dx == grid.dx && g.dy == grid.dy &&
-           m.g == material.g && m.nu == material.nu;
-  }
+/// Tangential operators of one grid/material/rolling step:
+///  a     — A = C_tt/G (T=1,2) or (C − C′)_tt/G (T=3) as kernels and FFT product;
+///  prev  — (u′_x, u′_y) from (p_x, p_y, p_n) of the previous time with C′ (T=2) or C (T=1);
+///  tn    — tangential displacement per step due to p_n (K ≠ 0), with C or C − C′;
+///  nt    — normal displacement due to (p_x, p_y) with C (K ≠ 0).
+struct TangentialOperators {
+  Grid grid;
+  CombinedMaterial material;
+  int t = 0;
+  double shift_x = 0.0, shift_y = 0.0;
+  elastic::Kernel xx, xy, yy;
+  std::unique_ptr<elastic::BlockConvolution> a;
+  elastic::Kernel prev_xx, prev_xy, prev_yy, prev_xn, prev_yn;
+  std::unique_ptr<elastic::BlockConvolution> prev;
+  elastic::Kernel tn_x, tn_y, nt_x, nt_y;
+  std::unique_ptr<elastic::BlockConvolution> tn, nt;
+  /// Plain C (3×3 with couplings when K ≠ 0) for the displacement fields and elastic energy.
+  elastic::Kernel c_xx, c_xy, c_yy, c_xn, c_yn, c_nn;
+  std::unique_ptr<elastic::BlockConvolution> full;
+
+  tangential::TangentialOperator view() const { return {&xx, &xy, &xy, &yy, a.get(), t != 3}; }
 };
 
 struct State::Impl {
   SolveOptions options;
-  std::unique_ptr<NormalOperators> normal;  ///< rebuilt when grid or material change
-  std::optional<Solution> previous;         ///< last solved case (P=0 continuation, warm starts)
+  std::unique_ptr<NormalOperators> normal;          ///< rebuilt when grid or material change
+  std::unique_ptr<TangentialOperators> tangential;  ///< rebuilt when grid, material or step change
+  std::optional<Solution> previous;  ///< last solved case (P=0 continuation, warm starts)
 
   /// The normal operators for this grid and material, built on first use and kept.
   NormalOperators& normal_operators(const Grid& grid, const CombinedMaterial& material);
+  /// The tangential operators for T = 1, 2, 3 with the rolling step (shift_x, shift_y) [mm].
+  TangentialOperators& tangential_operators(const Grid& grid, const CombinedMaterial& material,
+                                            int t, double shift_x, double shift_y);
 };
 
 }  // namespace rollcontact

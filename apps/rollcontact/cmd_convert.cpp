@@ -1,0 +1,73 @@
+// `rollcontact convert`: CONTACT .inp <-> TOML case files (docs/case-files.md).
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "io/inp_reader.hpp"
+#include "io/inp_writer.hpp"
+#include "io/toml_case_reader.hpp"
+#include "io/toml_case_writer.hpp"
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::cli {
+
+namespace {
+
+struct ConvertSettings {
+  std::string input;
+  std::string output;
+  bool quiet = false;
+};
+
+bool is_toml(const std::filesystem::path& p) {
+  return p.extension() == ".toml";
+}
+
+int convert(const ConvertSettings& s) {
+  const std::filesystem::path in(s.input);
+  const std::filesystem::path out(s.output);
+  if (is_toml(in) == is_toml(out)) {
+    throw InputError(s.output, 0,
+                     "convert needs one .toml and one .inp file (e.g. convert case.inp "
+                     "case.toml, or convert case.toml case.inp)");
+  }
+  const std::vector<Problem> problems =
+      is_toml(in) ? io::read_toml_file(in) : io::read_inp_file(in);
+  if (is_toml(out)) {
+    io::write_toml_file(out, problems);
+  } else {
+    io::write_inp_file(out, problems);
+  }
+  if (!s.quiet) {
+    fmt::print("converted {} case{} from {} to {}\n", problems.size(),
+               problems.size() == 1 ? "" : "s", in.string(), out.string());
+    // Overrides applied while reading change what the output says; the user should know.
+    for (const Problem& p : problems)
+      for (const std::string& w : p.source.warnings)
+        fmt::print(stderr, "rollcontact: warning: case {}: {}\n", p.case_number, w);
+  }
+  return exit_ok;
+}
+
+}  // namespace
+
+CommandRunner add_convert_command(CLI::App& app) {
+  auto settings = std::make_shared<ConvertSettings>();
+  auto* cmd = app.add_subcommand(
+      "convert",
+      "Convert a CONTACT .inp file to a TOML case file or back (direction from the extensions; "
+      "see docs/case-files.md)");
+  cmd->add_option("INPUT", settings->input, "input file (.inp or .toml)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("OUTPUT", settings->output, "output file (.toml or .inp)")->required();
+  cmd->add_flag("-q,--quiet", settings->quiet, "no console output");
+  return [settings] { return convert(*settings); };
+}
+
+}  // namespace rollcontact::cli

@@ -1,0 +1,34 @@
+#pragma once
+// u_i = Σ_j K_ij * p_j for a small block of Toeplitz operators (tangential 2×2 block, couplings).
+// Each input is transformed once and each output inverse-transformed once, so a 2×2 block costs
+// two forward and two inverse FFTs instead of four pairs.
+
+#include <complex>
+#include <memory>
+#include <vector>
+
+#include "elastic/fft_backend.hpp"
+#include "elastic/influence.hpp"
+
+namespace rollcontact::elastic {
+
+class BlockConvolution {
+ public:
+  /// kernels[i * n_in + j] is K_ij or nullptr for a zero block; all kernels share mx, my.
+  BlockConvolution(int n_out, int n_in, const std::vector<const Kernel*>& kernels,
+                   FftBackendKind backend, FftPlanning planning = FftPlanning::Estimate);
+
+  /// p[j] and u[i] point at mx*my values (ix fastest); u is overwritten. No allocation.
+  void apply(const double* const* p, double* const* u);
+
+  int n_out() const noexcept { return n_out_; }
+  int n_in() const noexcept { return n_in_; }
+
+ private:
+  int n_out_, n_in_, mx_, my_;
+  std::unique_ptr<FftEngine> engine_;
+  std::vector<std::vector<std::complex<double>>> kernel_hat_;  // per block, empty = zero
+  std::vector<std::vector<std::complex<double>>> input_hat_;   // per input, scratch
+};
+
+}  // namespace rollcontact::elastic

@@ -1,0 +1,33 @@
+#pragma once
+// Effective kinematics (CONTACT's silent adjustments, spec/physics.md §14) and the rigid slip of
+// each element (§5).
+
+#include <vector>
+
+#include "rollcontact/grid.hpp"
+#include "rollcontact/problem.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::tangential {
+
+/// Which tangential solver a case uses (physics.md §9.1).
+enum class TangentialSolverKind { None, TangCG, ConvexGS, SteadyGS };
+
+/// The solver selected by the T, G and M digits before the trailing-edge check.
+TangentialSolverKind select_solver(const ControlDigits& digits);
+
+/// χ, δq, V and δt after the adjustments of physics.md §14 (T=0,1: χ=0, δq=1, V=1; T=3 with
+/// SteadyGS: χ → 0 or π, δq = δx). `warnings` receives a message when a value is changed by more
+/// than CONTACT's 1 % threshold.
+EffectiveKinematics effective_kinematics(const Problem& problem, const Grid& grid,
+                                         std::vector<std::string>* warnings = nullptr);
+
+/// Rigid shift per step W = δq·w [mm] (T=2,3) or the rigid shift [mm] (T=1) of every element,
+/// for creepages (ξ, η, φ) [-, -, rad/mm] (T=1: shifts [mm, mm, rad]).
+struct RigidShift {
+  std::vector<double> wx, wy;
+};
+RigidShift rigid_shift(const Grid& grid, const Problem& problem, const EffectiveKinematics& kin,
+                       double cksi, double ceta, double cphi);
+
+}  // namespace rollcontact::tangential

@@ -1,0 +1,92 @@
+#pragma once
+// The frictional tangential problem for a fixed pressure (spec/physics.md §5–6, §9):
+//
+//   S = b + A·p_t  on the contact elements,
+//   adhesion: S = 0, |p_t| ≤ g;   slip: |p_t| = g, p_t = −g·S/|S|,
+//
+// with g = μ·p_n the traction bound, b the slip for p_t = 0 (rigid shift, normal coupling and
+// the previous-time displacement) and A the tangential influence operator per step: C_tt/G for
+// shifts and transient rolling (symmetric), (C − C′)_tt/G for steady rolling.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "elastic/block_convolution.hpp"
+#include "elastic/influence.hpp"
+#include "rollcontact/grid.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::tangential {
+
+/// The operator A as kernels (for element-wise access) and as an FFT product (2 in, 2 out).
+struct TangentialOperator {
+  const elastic::Kernel* xx = nullptr;
+  const elastic::Kernel* xy = nullptr;
+  const elastic::Kernel* yx = nullptr;
+  const elastic::Kernel* yy = nullptr;
+  elastic::BlockConvolution* product = nullptr;
+  bool symmetric = true;  ///< A = Aᵀ (shift and transient rolling)
+
+  /// (u_x, u_y) = A·(p_x, p_y) over the whole grid.
+  void apply(const std::vector<double>& px, const std::vector<double>& py, std::vector<double>& ux,
+             std::vector<double>& uy) const;
+};
+
+struct TangentialSystem {
+  Grid grid;
+  std::vector<char> contact;   ///< 1 for elements in contact
+  std::vector<double> bound;   ///< g = μ p_n [N/mm²]
+  std::vector<double> bx, by;  ///< slip at zero tangential traction [mm per step]
+  TangentialOperator a;
+  double chi = 0.0;  ///< rolling direction (sweep order of SteadyGS)
+};
+
+struct TangentialSettings {
+  double eps = 1e-5;  ///< relative change of p_t at which iterations stop
+  int max_iterations = 999;
+  double omega_h = 1.0, omega_s = 1.0;  ///< Gauss–Seidel relaxation in adhesion / slip
+  int anderson_depth = 8;               ///< Anderson acceleration of the sweeps (0: off)
+};
+
+struct TangentialResult {
+  std::vector<double> px, py;  ///< tangential tractions [N/mm²]
+  std::vector<double> sx, sy;  ///< slip per step S [mm] (0 outside the contact)
+  std::vector<ElementState> state;
+  int iterations = 0;
+  double residual = 0.0;
+  bool converged = false;
+  std::string message;
+};
+
+/// Classifies and finalises a traction field: S = b + A p, states from |p| vs g.
+void finalise(const TangentialSystem& sys, TangentialResult& res);
+
+/// One Gauss–Seidel sweep (or other fixed-point map) applied to the tractions in place.
+using SweepFunction = std::function<void(std::vector<double>& px, std::vector<double>& py)>;
+
+/// Iterates `sweep` with Anderson acceleration until the relative change of a sweep is below
+/// settings.eps; tractions are kept within the traction bound. Sets iterations, residual,
+/// converged and message of `res` (whose px, py hold the start and then the result).
+void iterate_with_acceleration(const TangentialSystem& sys, const TangentialSettings& settings,
+                               TangentialResult& res, const SweepFunction& sweep, const char* name);
+
+/// Gauss–Seidel over all contact elements with the exact local element solution (physics.md
+/// §9.3 "ConvexGS"); the slip of all other elements is updated after each element (dense,
+/// O(N_contact²) per sweep): robust for any A, meant for small and medium grids.
+TangentialResult solve_convex_gs(const TangentialSystem& sys, const TangentialSettings& settings,
+                                 const std::vector<double>* px0 = nullptr,
+                                 const std::vector<double>* py0 = nullptr);
+
+/// Projected, preconditioned nonlinear CG for symmetric A (shifts, transient rolling).
+TangentialResult solve_tang_cg(const TangentialSystem& sys, const TangentialSettings& settings,
+                               const std::vector<double>* px0 = nullptr,
+                               const std::vector<double>* py0 = nullptr);
+
+/// Gauss–Seidel for steady rolling: rows swept from the leading to the trailing edge, exact
+/// within a row, rows coupled through an FFT update per sweep.
+TangentialResult solve_steady_gs(const TangentialSystem& sys, const TangentialSettings& settings,
+                                 const std::vector<double>* px0 = nullptr,
+                                 const std::vector<double>* py0 = nullptr);
+
+}  // namespace rollcontact::tangential
