@@ -79,6 +79,14 @@ struct SolverReport {
   int newton_iterations = 0;
 };
 
+/// Effective parameters of the simplified theory (M=2,3,5; spec/physics.md §11.2), for reports.
+struct SimplifiedReport {
+  bool present = false;
+  double flx1 = 0.0, flx2 = 0.0, flx3 = 0.0;  ///< flexibilities after blending [mm³/N] (M=2: FLX)
+  double k_eff = 1.0;                          ///< slope reduction factor k [-] (in effect: L/k)
+  double a = 0.0, b = 0.0;                     ///< semi-axes of the (equivalent) ellipse [mm]
+};
+
 /// The solved case. Fields have grid.size() entries in element order ix + mx*iy.
 struct Solution {
   Grid grid;
@@ -96,6 +104,7 @@ struct Solution {
   Statistics statistics;
   SolverReport solver;
   std::vector<std::string> warnings;  ///< silent adjustments made (echoed in reports)
+  SimplifiedReport simplified;        ///< M=2,3,5 only (present)
 };
 
 }  // namespace rollcontact

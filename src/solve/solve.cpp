@@ -14,6 +14,8 @@
 #include "geometry/hertz.hpp"
 #include "normal/normal_solver.hpp"
 #include "rollcontact/errors.hpp"
+#include "simplified/prescribed_pressure.hpp"
+#include "simplified/simplified_solver.hpp"
 #include "solve/force_iteration.hpp"
 #include "solve/state_impl.hpp"
 #include "tangential/kinematics.hpp"
@@ -33,6 +35,7 @@ using Field = std::vector<double>;
 struct PreviousFields {
   bool present = false;
   Field px, py, pn;
+  Field ux, uy;  ///< displacements (transient Fastsim)
 };
 
 PreviousFields map_previous(const Solution* prev, const Grid& grid) {
@@ -41,6 +44,8 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid) {
   out.px.assign(n, 0.0);
   out.py.assign(n, 0.0);
   out.pn.assign(n, 0.0);
+  out.ux.assign(n, 0.0);
+  out.uy.assign(n, 0.0);
   if (prev == nullptr || prev->pn.empty()) return out;
   const Grid& old = prev->grid;
   if (std::abs(old.dx - grid.dx) > 1e-6 * grid.dx || std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
@@ -58,6 +63,10 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid) {
       out.px[i] = prev->px[j];
       out.py[i] = prev->py[j];
       out.pn[i] = prev->pn[j];
+      if (prev->ux.size() == old.size()) {
+        out.ux[i] = prev->ux[j];
+        out.uy[i] = prev->uy[j];
+      }
     }
   }
   out.present = true;
@@ -86,6 +95,8 @@ class CaseSolver {
 
  private:
   void solve_normal(const Field& px, const Field& py);
+  void set_prescribed_pressure();
+  tangential::TangentialResult solve_simplified(double cksi, double ceta, double cphi);
   tangential::TangentialResult solve_tangential(double cksi, double ceta, double cphi,
                                                 const Field* px0, const Field* py0);
   void compute_totals(const tangential::TangentialResult* tang);
@@ -95,6 +106,9 @@ class CaseSolver {
   Solution& sol_;
   const Grid& grid_;
   bool coupled_ = false;
+  bool prescribed_ = false;  ///< B=2,3: normal problem skipped
+  bool simplified_ = false;  ///< M=2,3,5: Fastsim / FaStrip instead of the exact theory
+  Field simplified_ux_, simplified_uy_;
   double mu_ = 0.0;
   PreviousFields prev_;
   TangentialOperators* tops_ = nullptr;
@@ -152,6 +166,69 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     sol_.solver.converged = false;
     sol_.solver.message = r.message;
   }
+}
+
+void CaseSolver::set_prescribed_pressure() {
+  const HertzReport& hz = sol_.hertz;
+  if (!hz.present)
+    throw ProblemError(fmt::format(
+        "prescribed pressures B={} need a Hertzian potential contact (IPOTCN < 0)",
+        problem_.digits.b));
+  const auto shape = problem_.digits.b == 2 ? simplified::PressureShape::Elliptic
+                                            : simplified::PressureShape::Parabolic;
+  sol_.pn = simplified::prescribed_pressure(grid_, hz, shape, hz.fn);
+  sol_.totals.pen = hz.two_dimensional ? 0.0 : hz.pen;  // 2-D Hertz has no approach
+}
+
+tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ceta, double cphi) {
+  const std::size_t n = grid_.size();
+  const int t = problem_.digits.t;
+  simplified::SimplifiedCase c;
+  c.grid = grid_;
+  c.pn = sol_.pn;
+  c.ellipse = sol_.hertz.present ? simplified::Ellipse{sol_.hertz.aa, sol_.hertz.bb}
+                                 : simplified::equivalent_ellipse(grid_, sol_.pn);
+  c.g = sol_.material.g;
+  c.nu = sol_.material.nu;
+  c.mu = mu_;
+  double fn = 0.0;
+  for (double v : sol_.pn) fn += v;
+  c.fn = fn * grid_.element_area();
+  c.model = simplified::simplified_model(problem_);
+  c.creepages = {cksi, ceta, cphi};
+  const simplified::RigidShiftParts shift =
+      simplified::rigid_shift_parts(grid_, problem_, sol_.kinematics, c.creepages);
+  c.shift = &shift;
+  c.steady = t == 3;
+  c.chi = sol_.kinematics.chi;
+  Field ux_prev, uy_prev;
+  if (t == 2 && prev_.present) {
+    ux_prev = simplified::upstream_field(grid_, prev_.ux, c.chi, sol_.kinematics.dq);
+    uy_prev = simplified::upstream_field(grid_, prev_.uy, c.chi, sol_.kinematics.dq);
+    c.ux_prev = ux_prev;
+    c.uy_prev = uy_prev;
+  }
+  simplified::SimplifiedOutcome r = simplified::solve_simplified(c);
+  SimplifiedReport& rep = sol_.simplified;
+  rep.present = true;
+  rep.flx1 = r.flex.l1;
+  rep.flx2 = r.flex.l2;
+  rep.flx3 = r.flex.l3;
+  rep.k_eff = r.k_eff;
+  rep.a = c.ellipse.a;
+  rep.b = c.ellipse.b;
+
+  tangential::TangentialResult res;
+  res.px = std::move(r.fields.px);
+  res.py = std::move(r.fields.py);
+  res.sx = std::move(r.fields.sx);
+  res.sy = std::move(r.fields.sy);
+  res.state = std::move(r.fields.state);
+  res.converged = true;  // a direct method: one pass
+  simplified_ux_ = std::move(r.fields.ux);
+  simplified_uy_ = std::move(r.fields.uy);
+  (void)n;
+  return res;
 }
 
 tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ceta, double cphi,
@@ -227,14 +304,17 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
 void CaseSolver::run() {
   const std::size_t n = grid_.size();
   const ControlDigits& d = problem_.digits;
-  coupled_ = std::abs(sol_.material.k) >= 1e-6;
+  prescribed_ = d.b == 2 || d.b == 3;
+  simplified_ = d.m == 2 || d.m == 3 || d.m == 5;
+  // The simplified theory has no normal-tangential coupling.
+  coupled_ = !simplified_ && std::abs(sol_.material.k) >= 1e-6;
   mu_ = problem_.friction.fstat;
   sol_.kinematics = tangential::effective_kinematics(problem_, grid_, &notes_);
 
   const Solution* prev =
       d.p != 2 && st_.previous && !st_.previous->pn.empty() ? &*st_.previous : nullptr;
   prev_ = map_previous(prev, grid_);
-  if (d.t >= 1) {
+  if (d.t >= 1 && !simplified_) {
     const auto& k = sol_.kinematics;
     tops_ = &st_.tangential_operators(grid_, sol_.material, d.t, k.dq * std::cos(k.chi),
                                       k.dq * std::sin(k.chi));
@@ -246,17 +326,23 @@ void CaseSolver::run() {
     px = prev_.px;
     py = prev_.py;
   }
-  const int max_outer = coupled_ && d.t >= 1 ? std::max(1, problem_.solver.maxout) : 1;
+  const int max_outer =
+      coupled_ && !prescribed_ && d.t >= 1 ? std::max(1, problem_.solver.maxout) : 1;
   tangential::TangentialResult tang;
   ForceIterationResult creep{problem_.kinematics.cksi, problem_.kinematics.ceta, 0, true, {}, {}};
   int outer = 0;
   for (outer = 1; outer <= max_outer; ++outer) {
     const Field pn_old = sol_.pn.empty() ? Field(n, 0.0) : sol_.pn, px_old = px, py_old = py;
     // Johnson's process (MAXOUT = 1): the normal problem sees no tangential tractions.
-    solve_normal(max_outer > 1 ? px : Field(n, 0.0), max_outer > 1 ? py : Field(n, 0.0));
+    if (prescribed_)
+      set_prescribed_pressure();
+    else
+      solve_normal(max_outer > 1 ? px : Field(n, 0.0), max_outer > 1 ? py : Field(n, 0.0));
     if (d.t == 0) break;
     auto evaluate = [&](double cksi, double ceta) {
-      tang = solve_tangential(cksi, ceta, problem_.kinematics.cphi, &px, &py);
+      tang = simplified_ ? solve_simplified(cksi, ceta, problem_.kinematics.cphi)
+                         : solve_tangential(cksi, ceta, problem_.kinematics.cphi, &px, &py);
+      sol_.solver.tangential_iterations += tang.iterations;
       px = tang.px;
       py = tang.py;
       double fx = 0.0, fy = 0.0;
@@ -296,7 +382,6 @@ void CaseSolver::run() {
         sol_.solver.message = creep.message;
       }
     }
-    sol_.solver.tangential_iterations += tang.iterations;
     if (!tang.converged) {
       sol_.solver.converged = false;
       sol_.solver.message = tang.message;
@@ -316,7 +401,7 @@ void CaseSolver::run() {
         "the normal-tangential (Panagiotopoulos) loop did not converge in MAXOUT = {} passes",
         max_outer);
   }
-  sol_.statistics.inorm = outer;
+  sol_.statistics.inorm = prescribed_ ? 0 : outer;
   sol_.statistics.itang = d.t >= 1 ? outer : 0;
 
   if (d.t >= 1) {
@@ -347,11 +432,16 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   s.ux.assign(n, 0.0);
   s.uy.assign(n, 0.0);
   s.un.assign(n, 0.0);
-  if (tops_ != nullptr) {
+  if (simplified_ && tang != nullptr) {
+    // Fastsim's own displacements u = L·p; no elastic energy (physics.md §7.2, §11).
+    s.ux = simplified_ux_;
+    s.uy = simplified_uy_;
+    if (!prescribed_) st_.normal_operators(grid_, s.material).product->apply(s.pn.data(), s.un.data());
+  } else if (tops_ != nullptr) {
     const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
     double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};
     tops_->full->apply(in, out);
-  } else {
+  } else if (!prescribed_) {
     NormalOperators& ops = st_.normal_operators(grid_, s.material);
     ops.product->apply(s.pn.data(), s.un.data());
   }
@@ -394,7 +484,8 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   t.fy *= area;
   t.mz *= area;
   t.contact_area = st.ncon * area;
-  t.elastic_energy = 0.5e-3 * energy * area;                   // N·mm → J
+  // N·mm → J; not defined with prescribed pressures (u_n unknown) or the simplified theory.
+  t.elastic_energy = prescribed_ || simplified_ ? 0.0 : 0.5e-3 * energy * area;
   t.frictional_power = 1e-3 * power * area / s.kinematics.dt;  // N·mm/s → W (T=1: J per step)
 }
 
@@ -402,8 +493,12 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
 
 void check_supported(const Problem& problem) {
   const ControlDigits& d = problem.digits;
-  if (d.b != 0) not_supported(fmt::format("normal method B={}", d.b));
-  if (d.m != 0) not_supported(fmt::format("material model M={}", d.m));
+  if (d.b != 0 && d.b != 2 && d.b != 3) not_supported(fmt::format("normal method B={}", d.b));
+  if (d.m != 0 && d.m != 2 && d.m != 3 && d.m != 5)
+    not_supported(fmt::format("material model M={}", d.m));
+  if ((d.m == 2 || d.m == 3 || d.m == 5) && d.t == 1)
+    not_supported(fmt::format("the simplified theory M={} with shifts T=1", d.m));
+  if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
   if (d.c == 3 || d.c == 4 || d.c == 9)
     not_supported(fmt::format("influence coefficients C={}", d.c));
   if (d.s != 0) not_supported(fmt::format("subsurface stresses S={}", d.s));

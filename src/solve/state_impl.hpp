@@ -48,7 +48,11 @@ struct TangentialOperators {
   elastic::Kernel c_xx, c_xy, c_yy, c_xn, c_yn, c_nn;
   std::unique_ptr<elastic::BlockConvolution> full;
 
-  tangential::TangentialOperator view() const { return {&xx, &xy, &xy, &yy, a.get(), t != 3}; }
+  std::unique_ptr<tangential::TangentialPreconditioner> preconditioner;  ///< T=1,2 only
+
+  tangential::TangentialOperator view() const {
+    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), t != 3};
+  }
 };
 
 struct State::Impl {

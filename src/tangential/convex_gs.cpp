@@ -44,10 +44,14 @@ void finalise(const TangentialSystem& sys, TangentialResult& res) {
 
 namespace {
 
-/// The elements in contact in sweep order and the dense Gauss–Seidel sweep over them.
-class DenseSweeper {
+/// The elements in contact in sweep order and the Gauss–Seidel sweep over them. After each
+/// element the slip of the elements within `band` rows is updated at once; the remaining
+/// (weaker, longer-range) coupling is refreshed by one FFT product at the start of each sweep.
+/// band ≥ my − 1 is the exact (dense) Gauss–Seidel sweep.
+class GaussSeidelSweeper {
  public:
-  explicit DenseSweeper(const TangentialSystem& sys) : sys_(sys), grid_(sys.grid) {
+  GaussSeidelSweeper(const TangentialSystem& sys, int band)
+      : sys_(sys), grid_(sys.grid), band_(band) {
     for (std::size_t i = 0; i < grid_.size(); ++i)
       if (sys.contact[i]) elements_.push_back(static_cast<int>(i));
     // Rolling: sweep each row from the trailing edge (χ = 0: low ix) towards the leading edge,
@@ -61,11 +65,12 @@ class DenseSweeper {
       if (ay != by) return ay < by;
       return backwards ? a > b : a < b;
     });
+    row_start_.assign(static_cast<std::size_t>(grid_.my) + 1, 0);
+    for (int e : elements_) ++row_start_[static_cast<std::size_t>(e / mx) + 1];
+    for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
     sx_.resize(grid_.size());
     sy_.resize(grid_.size());
   }
-
-  const std::vector<int>& elements() const noexcept { return elements_; }
 
   /// One sweep starting from (px, py) (modified in place).
   void sweep(std::vector<double>& px, std::vector<double>& py, const TangentialSettings& set) {
@@ -96,7 +101,11 @@ class DenseSweeper {
       py[ui] = pyn;
       if (dpx == 0.0 && dpy == 0.0) continue;
       const int ix = i % mx, iy = i / mx;
-      for (int j : elements_) {
+      const int row_lo = std::max(0, iy - band_), row_hi = std::min(grid_.my - 1, iy + band_);
+      const std::size_t first = row_start_[static_cast<std::size_t>(row_lo)];
+      const std::size_t last = row_start_[static_cast<std::size_t>(row_hi) + 1];
+      for (std::size_t k = first; k < last; ++k) {
+        const int j = elements_[k];
         const int dix = j % mx - ix, diy = j / mx - iy;
         const std::size_t uj = static_cast<std::size_t>(j);
         sx_[uj] += kxx.at(dix, diy) * dpx + kxy.at(dix, diy) * dpy;
@@ -108,9 +117,20 @@ class DenseSweeper {
  private:
   const TangentialSystem& sys_;
   const Grid& grid_;
+  int band_;
   std::vector<int> elements_;
+  std::vector<std::size_t> row_start_;
   std::vector<double> sx_, sy_;
 };
+
+/// Up to this many contact elements the sweeps are exact (dense, O(N²) per sweep).
+constexpr std::size_t dense_limit = 4000;
+
+int sweep_band(const TangentialSystem& sys) {
+  std::size_t ncon = 0;
+  for (char c : sys.contact) ncon += c ? 1 : 0;
+  return ncon <= dense_limit ? sys.grid.my : 2;
+}
 
 }  // namespace
 
@@ -120,11 +140,11 @@ TangentialResult solve_convex_gs(const TangentialSystem& sys, const TangentialSe
   TangentialResult res;
   res.px = px0 ? *px0 : std::vector<double>(n, 0.0);
   res.py = py0 ? *py0 : std::vector<double>(n, 0.0);
-  DenseSweeper sweeper(sys);
+  GaussSeidelSweeper sweeper(sys, sweep_band(sys));
   iterate_with_acceleration(
       sys, settings, res,
       [&](std::vector<double>& px, std::vector<double>& py) { sweeper.sweep(px, py, settings); },
-      "ConvexGS");
+      sys.a.symmetric ? "ConvexGS" : "SteadyGS");
   finalise(sys, res);
   return res;
 }

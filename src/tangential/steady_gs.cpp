@@ -1,4 +1,6 @@
-// SteadyGS: placeholder delegating to ConvexGS until the row solver lands.
+// SteadyGS: steady rolling by Gauss–Seidel sweeps, rows from the trailing to the leading edge,
+// with Anderson acceleration (see convex_gs.cpp: the sweeps are shared; for large grids the
+// within-sweep updates are limited to a band of rows and the rest is refreshed by FFT).
 
 #include "tangential/tangential_system.hpp"
 

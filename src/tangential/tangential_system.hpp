@@ -16,6 +16,7 @@
 #include "elastic/influence.hpp"
 #include "rollcontact/grid.hpp"
 #include "rollcontact/solution.hpp"
+#include "tangential/tangential_preconditioner.hpp"
 
 namespace rollcontact::tangential {
 
@@ -26,7 +27,8 @@ struct TangentialOperator {
   const elastic::Kernel* yx = nullptr;
   const elastic::Kernel* yy = nullptr;
   elastic::BlockConvolution* product = nullptr;
-  bool symmetric = true;  ///< A = Aᵀ (shift and transient rolling)
+  TangentialPreconditioner* preconditioner = nullptr;  ///< approximate A⁻¹ (symmetric A only)
+  bool symmetric = true;                               ///< A = Aᵀ (shift and transient rolling)
 
   /// (u_x, u_y) = A·(p_x, p_y) over the whole grid.
   void apply(const std::vector<double>& px, const std::vector<double>& py, std::vector<double>& ux,
