@@ -83,8 +83,31 @@ struct SolverReport {
 struct SimplifiedReport {
   bool present = false;
   double flx1 = 0.0, flx2 = 0.0, flx3 = 0.0;  ///< flexibilities after blending [mm³/N] (M=2: FLX)
-  double k_eff = 1.0;                          ///< slope reduction factor k [-] (in effect: L/k)
-  double a = 0.0, b = 0.0;                     ///< semi-axes of the (equivalent) ellipse [mm]
+  double k_eff = 1.0;                         ///< slope reduction factor k [-] (in effect: L/k)
+  double a = 0.0, b = 0.0;                    ///< semi-axes of the (equivalent) ellipse [mm]
+};
+
+/// A maximum (or minimum) over the points of a subsurface block and where it occurs [mm].
+struct SubsurfaceExtreme {
+  double value = 0.0;
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+
+/// Subsurface displacements and stresses of one block of points (spec/physics.md §16). Points
+/// are the tensor product of the coordinate lists, index ix + nx·(iy + ny·iz) (x fastest, then
+/// y, then z). z ≥ 0 lies in body 1, z < 0 in body 2; values are in the global (x, y, z) frame
+/// (z into body 1), displacements of the body the point lies in. Stresses [N/mm²] are positive
+/// in tension.
+struct SubsurfaceResult {
+  std::vector<double> x, y, z;               ///< coordinates [mm]
+  std::vector<double> ux, uy, uz;            ///< displacements [mm]
+  std::vector<double> sighyd, sigvm, sigtr;  ///< tr σ/3, von Mises √(3J₂), Tresca σ₁−σ₃
+  std::vector<double> sig1, sig2, sig3;      ///< principal stresses, σ₁ ≥ σ₂ ≥ σ₃
+  std::vector<double> sxx, sxy, sxz, syy, syz, szz;  ///< stress tensor
+  /// Report maxima (spec/outputs.md §3.7); ABSMAX keeps the sign of the value.
+  SubsurfaceExtreme absmax_sighyd, max_sigvm, max_sigtr, max_sig1, min_sig3;
+  SubsurfaceExtreme absmax_sxx, absmax_syy, absmax_szz;
+  std::size_t size() const noexcept { return x.size() * y.size() * z.size(); }
 };
 
 /// The solved case. Fields have grid.size() entries in element order ix + mx*iy.
@@ -105,6 +128,8 @@ struct Solution {
   SolverReport solver;
   std::vector<std::string> warnings;  ///< silent adjustments made (echoed in reports)
   SimplifiedReport simplified;        ///< M=2,3,5 only (present)
+  /// S >= 1: subsurface displacements and stresses, one entry per block of points.
+  std::vector<SubsurfaceResult> subsurface;
 };
 
 }  // namespace rollcontact

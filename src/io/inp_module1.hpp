@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <map>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "io/inp_reader.hpp"
 #include "io/inp_stream.hpp"
@@ -39,6 +41,11 @@ class Module1Reader {
     bool has_subsurface = false;      ///< an S=3 block list was read
     bool has_heat = false;            ///< H=3 parameters were read
   };
+
+  /// Profile line(s) of §5.1 and the profile or slices file they name; `gaught` is the track's
+  /// gauge height in effect (a rail slices file requires GAUGHT <= 0).
+  ProfileSpec read_profile_line(InpStream& in, bool is_wheel, double gaught,
+                                std::vector<std::string>& warnings) const;
 
   std::filesystem::path base_dir_;
   InpReadOptions options_;

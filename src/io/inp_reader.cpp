@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 
+#include "io/inp_module1.hpp"
 #include "io/inp_module3.hpp"
 #include "io/inp_stream.hpp"
 #include "rollcontact/errors.hpp"
@@ -51,28 +52,32 @@ ModuleLine read_module_line(InpStream& in) {
 
 }  // namespace
 
-std::vector<Problem> read_inp_string(const std::string& text, const std::string& name,
-                                     const std::filesystem::path& base_dir,
-                                     const InpReadOptions& options) {
+std::vector<InputCase> read_input_string(const std::string& text, const std::string& name,
+                                         const std::filesystem::path& base_dir,
+                                         const InpReadOptions& options) {
   InpStream in(text, name);
   Module3Reader module3(base_dir, options);
+  Module1Reader module1(base_dir, options);
   std::map<int, int> case_counts;  // per result element, shared by modules 1 and 3
-  std::vector<Problem> problems;
+  std::vector<InputCase> cases;
 
   if (in.at_end()) in.fail(in.line_count(), "no module line found (expected e.g. '3 MODULE')");
   while (!in.at_end()) {
     const ModuleLine m = read_module_line(in);
     if (m.module == 0) break;  // "0 MODULE": stop reading, the rest of the file is ignored
-    if (m.module == 1) {
-      // Module 1 will get its own case reader built on the same stream and shared blocks.
-      in.fail(m.line, "module 1 (wheel/rail) input is not supported yet");
-    }
     int module_line = m.line;
     for (;;) {
-      Problem p = module3.read_case(in, m.reid, m.cpid, module_line, ++case_counts[m.reid]);
-      const int r = p.digits.r;
-      const int case_number = p.case_number;
-      problems.push_back(std::move(p));
+      const int case_number = ++case_counts[m.reid];
+      int r = 0;
+      if (m.module == 1) {
+        WheelRailProblem p = module1.read_case(in, m.reid, module_line, case_number);
+        r = p.digits.r;
+        cases.emplace_back(std::move(p));
+      } else {
+        Problem p = module3.read_case(in, m.reid, m.cpid, module_line, case_number);
+        r = p.digits.r;
+        cases.emplace_back(std::move(p));
+      }
       if (r == 1 || r == 3) break;  // a module line follows
       if (in.at_end()) {
         in.fail(in.line_count(),
@@ -82,6 +87,33 @@ std::vector<Problem> read_inp_string(const std::string& text, const std::string&
       }
       module_line = 0;
     }
+  }
+  return cases;
+}
+
+std::vector<InputCase> read_input_cases(const std::filesystem::path& path,
+                                        const InpReadOptions& options) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw InputError(path.string(), 0, "cannot open input file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return read_input_string(text.str(), path.string(), path.parent_path(), options);
+}
+
+std::vector<Problem> read_inp_string(const std::string& text, const std::string& name,
+                                     const std::filesystem::path& base_dir,
+                                     const InpReadOptions& options) {
+  std::vector<InputCase> cases = read_input_string(text, name, base_dir, options);
+  std::vector<Problem> problems;
+  problems.reserve(cases.size());
+  for (InputCase& c : cases) {
+    if (const auto* wr = std::get_if<WheelRailProblem>(&c)) {
+      const int line = wr->source.module_line > 0 ? wr->source.module_line : wr->source.first_line;
+      throw InputError(name, line,
+                       "module 1 (wheel/rail) input is not supported yet by this reader (use "
+                       "read_input_cases)");
+    }
+    problems.push_back(std::move(std::get<Problem>(c)));
   }
   return problems;
 }

@@ -157,24 +157,25 @@ void write_material_block(std::ostream& os, const Problem& problem, const Soluti
     line(os, "  " + g12(mp[0]) + g12(mp[1]) + sig(mp[2]) + sig(mp[3]) + sig(mp[2] * veloc) +
                  sig(mp[3] * veloc));
   }
+  const SimplifiedReport& simp = solution.simplified;
   if (d.m == 2) {
     line(os, "");
     line(os, " SIMPLIFIED THEORY MATERIAL CONSTANTS");
     line(os, "     FLX");
-    line(os, "  " + g12(mp[0]));
+    line(os, "  " + g12(simp.present ? simp.flx1 : mp[0]));
   }
   if (d.m == 3 || d.m == 5) {
-    // The effective flexibilities come from the Fastsim set-up, which the Solution does not carry.
+    // Effective flexibilities (after blending) from the Fastsim set-up; 0 when not solved.
     line(os, "");
     line(os, " SIMPLIFIED THEORY MATERIAL CONSTANTS");
     line(os, "     FLX1        FLX2        FLX3");
-    line(os, "  " + g12(0.0) + g12(0.0) + g12(0.0));
+    line(os, "  " + g12(simp.flx1) + g12(simp.flx2) + g12(simp.flx3));
   }
   if (d.m == 2 || d.m == 3 || d.m == 5) {
     const std::size_t first = d.m == 2 ? 1 : 0;
     const double k0 = mp[first], alfa = mp[first + 1], beta = mp[first + 2];
     // k = k0 (alfa + (1 - alfa)/(1 + beta eps)) equals k0 for alfa = 1 whatever eps is.
-    const double k_eff = alfa == 1.0 ? k0 : 0.0;
+    const double k_eff = simp.present ? simp.k_eff : alfa == 1.0 ? k0 : 0.0;
     line(os, "");
     line(os,
          fmt::format(" MODIFIED {} SLOPE REDUCTION PARAMETERS", d.m == 5 ? "FASTRIP" : "FASTSIM"));

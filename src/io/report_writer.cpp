@@ -10,6 +10,7 @@
 #include <string>
 
 #include "io/report_internal.hpp"
+#include "io/report_subsurface.hpp"
 #include "io/report_values.hpp"
 #include "rollcontact/version.hpp"
 
@@ -96,6 +97,7 @@ void write_case_report(std::ostream& os, const Problem& problem, const Solution&
     write_element_division(os, solution, d.t, effective_kinematics(problem, solution).chi);
   }
   if (d.o >= 5) report::write_element_table(os, problem, solution);
+  report::write_subsurface_summaries(os, problem, solution);
 }
 
 void write_case_error(std::ostream& os, const Problem& problem, const std::string& message) {

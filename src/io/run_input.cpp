@@ -1,12 +1,17 @@
 #include "io/run_input.hpp"
 
+#include <fmt/format.h>
+
 #include <map>
 #include <sstream>
+#include <variant>
 
 #include "io/atomic_file.hpp"
 #include "io/inp_reader.hpp"
 #include "io/json_writer.hpp"
+#include "io/mat_writer.hpp"
 #include "io/report_writer.hpp"
+#include "io/subs_writer.hpp"
 #include "io/toml_case_reader.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -51,6 +56,8 @@ RunResult run_problems(const std::vector<Problem>& problems, const std::string& 
     }
     if (outcome.solved) {
       write_case_report(report, problem, outcome.solution);
+      write_subs_file(output_stem, problem, outcome.solution);
+      if (problem.digits.a >= 1) write_mat_file(output_stem, problem, outcome.solution);
       cases.push_back(case_to_json(problem, outcome.solution));
     } else if (!outcome.skipped) {
       write_case_error(report, problem, outcome.error);
@@ -71,10 +78,39 @@ RunResult run_problems(const std::vector<Problem>& problems, const std::string& 
   return result;
 }
 
-RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
+namespace {
+
+/// Stand-in for a module-1 case until the wheel/rail solver exists: identity, digits and source
+/// of the case, with a per-case error so that the run reports it and continues.
+Problem not_supported_stand_in(const WheelRailProblem& wr) {
+  Problem p;
+  p.case_number = wr.case_number;
+  p.result_element = wr.result_element;
+  p.digits = wr.digits;
+  p.source = wr.source;
+  p.source.case_error = fmt::format("not supported yet: module 1 wheel/rail solver (C1={}, D={})",
+                                    wr.config, wr.discretisation.method);
+  return p;
+}
+
+std::vector<Problem> read_problems(const std::filesystem::path& input) {
   // TOML case files (docs/case-files.md) by extension; everything else is CONTACT .inp.
-  const std::vector<Problem> problems =
-      input.extension() == ".toml" ? read_toml_file(input) : read_inp_file(input);
+  if (input.extension() == ".toml") return read_toml_file(input);
+  std::vector<Problem> problems;
+  for (InputCase& c : read_input_cases(input)) {
+    if (auto* p = std::get_if<Problem>(&c)) {
+      problems.push_back(std::move(*p));
+    } else {
+      problems.push_back(not_supported_stand_in(std::get<WheelRailProblem>(c)));
+    }
+  }
+  return problems;
+}
+
+}  // namespace
+
+RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
+  const std::vector<Problem> problems = read_problems(input);
   std::filesystem::path dir = options.output_dir.empty() ? input.parent_path() : options.output_dir;
   if (!options.output_dir.empty()) std::filesystem::create_directories(dir);
   const std::filesystem::path stem = dir / input.stem();

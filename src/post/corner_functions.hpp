@@ -19,27 +19,27 @@ namespace rollcontact::post {
 /// Index of one corner function (derivatives of V, L, M named by their subscripts). Derivatives
 /// not listed follow from harmonicity and ∂_z L = V, ∂_z M = L (see half_space_response.cpp).
 enum Corner : std::size_t {
-  kV,      ///< a ln(b+ρ) + b ln(a+ρ) − z atan(ab/(zρ))
-  kVx,     ///< ln(b+ρ)
-  kVy,     ///< ln(a+ρ)
-  kVz,     ///< −atan(ab/(zρ))  (solid angle)
-  kVxx,    ///< a / (ρ (b+ρ))
-  kVyy,    ///< b / (ρ (a+ρ))
-  kVxy,    ///< 1/ρ
-  kVxz,    ///< z / (ρ (b+ρ))
-  kVyz,    ///< z / (ρ (a+ρ))
-  kLx,     ///< b ln(ρ+z) + z ln(b+ρ) + a θ(a,b)
-  kLy,     ///< a ln(ρ+z) + z ln(a+ρ) + b θ(b,a)
-  kLxx,    ///< θ(a,b) = atan(b/a) − atan(bz/(aρ))
-  kLyy,    ///< θ(b,a)
-  kLxy,    ///< ln(ρ+z)
-  kLxxy,   ///< a / (ρ (ρ+z))
-  kLxyy,   ///< b / (ρ (ρ+z))
-  kMxx,    ///< z θ(a,b) − a ln(b+ρ)
-  kMyy,    ///< z θ(b,a) − b ln(a+ρ)
-  kMxy,    ///< z ln(ρ+z) − ρ  (= Ω)
-  kMxxy,   ///< −a / (ρ+z)
-  kMxyy,   ///< −b / (ρ+z)
+  kV,     ///< a ln(b+ρ) + b ln(a+ρ) − z atan(ab/(zρ))
+  kVx,    ///< ln(b+ρ)
+  kVy,    ///< ln(a+ρ)
+  kVz,    ///< −atan(ab/(zρ))  (solid angle)
+  kVxx,   ///< a / (ρ (b+ρ))
+  kVyy,   ///< b / (ρ (a+ρ))
+  kVxy,   ///< 1/ρ
+  kVxz,   ///< z / (ρ (b+ρ))
+  kVyz,   ///< z / (ρ (a+ρ))
+  kLx,    ///< b ln(ρ+z) + z ln(b+ρ) + a θ(a,b)
+  kLy,    ///< a ln(ρ+z) + z ln(a+ρ) + b θ(b,a)
+  kLxx,   ///< θ(a,b) = atan(b/a) − atan(bz/(aρ))
+  kLyy,   ///< θ(b,a)
+  kLxy,   ///< ln(ρ+z)
+  kLxxy,  ///< a / (ρ (ρ+z))
+  kLxyy,  ///< b / (ρ (ρ+z))
+  kMxx,   ///< z θ(a,b) − a ln(b+ρ)
+  kMyy,   ///< z θ(b,a) − b ln(a+ρ)
+  kMxy,   ///< z ln(ρ+z) − ρ  (= Ω)
+  kMxxy,  ///< −a / (ρ+z)
+  kMxyy,  ///< −b / (ρ+z)
   kCornerCount
 };
 

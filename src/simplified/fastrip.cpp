@@ -97,22 +97,15 @@ void fastrip_correction(const FastripInput& in, SimplifiedFields& fields) {
         fields.state[i] = ElementState::Slip;
       }
     }
-    // Displacements and slip of the corrected row, with the steady-rolling u′ (upstream element).
-    double upx = 0.0, upy = 0.0;
-    for (int k = 0; k < grid.mx; ++k) {
-      const int ix = s > 0.0 ? grid.mx - 1 - k : k;
+    // Displacements of the corrected row follow its tractions, u = L·p. The slip keeps the
+    // Fastsim value in slip elements (0 where Fastsim had adhesion), as CONTACT reports it (its
+    // frictional power depends on this); adhesion has no slip.
+    for (int ix = first; ix <= last; ++ix) {
       const std::size_t i = grid.index(ix, iy);
-      if (!(in.pn[i] > 0.0)) {
-        upx = upy = 0.0;
-        continue;
-      }
+      if (!(in.pn[i] > 0.0)) continue;
       fields.ux[i] = in.flex.l1 * fields.px[i];
       fields.uy[i] = in.flex.l2 * fields.py[i];
-      const bool slip = fields.state[i] == ElementState::Slip;
-      fields.sx[i] = slip ? fields.ux[i] - upx + in.wx[i] : 0.0;
-      fields.sy[i] = slip ? fields.uy[i] - upy + in.wy[i] : 0.0;
-      upx = fields.ux[i];
-      upy = fields.uy[i];
+      if (fields.state[i] != ElementState::Slip) fields.sx[i] = fields.sy[i] = 0.0;
     }
   }
 }

@@ -21,16 +21,15 @@ struct FastripInput {
   double g = 0.0, nu = 0.0;  ///< combined shear modulus [N/mm²] and Poisson ratio [-]
   double fn = 0.0;           ///< total normal force [N]
   Creepages creepages;
-  double chi = 0.0;                ///< rolling direction [rad]: 0 (leading edge at +x) or π
-  Flexibilities flex;              ///< effective flexibilities L/k [mm³/N], for u = L·p
-  std::span<const double> wx, wy;  ///< rigid shift per step W [mm] (as given to Fastsim)
+  double chi = 0.0;    ///< rolling direction [rad]: 0 (leading edge at +x) or π
+  Flexibilities flex;  ///< effective flexibilities L/k [mm³/N], for u = L·p
 };
 
 /// Replaces, row by row, the Fastsim tractions in `fields` by the strip-theory solution where it
 /// respects the traction bound (max |f| ≤ 1 over the adhesion zone): adhesion zone at the
 /// leading edge with the strip tractions, slip elsewhere with the Fastsim direction scaled onto
-/// μp_n. Rows whose strip solution violates the bound keep the Fastsim result. Displacements
-/// and slip of corrected rows are recomputed (u = L·p, S = u − u′ + W, S = 0 in adhesion).
+/// μp_n. Rows whose strip solution violates the bound keep the Fastsim result. In corrected rows
+/// u = L·p; the slip S keeps the Fastsim value in slip elements and is 0 in adhesion.
 void fastrip_correction(const FastripInput& in, SimplifiedFields& fields);
 
 }  // namespace rollcontact::simplified

@@ -12,7 +12,7 @@ namespace {
 constexpr double pi = std::numbers::pi;
 }
 
-Ellipse equivalent_ellipse(const Grid& grid, const std::vector<double>& pn) {
+Ellipse equivalent_ellipse(const Grid& grid, std::span<const double> pn) {
   int n = 0;
   int ix_lo = grid.mx, ix_hi = -1, iy_lo = grid.my, iy_hi = -1;
   for (int iy = 0; iy < grid.my; ++iy) {

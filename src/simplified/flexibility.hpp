@@ -3,7 +3,7 @@
 // contact patch, Kalker's three flexibilities L1, L2, L3, their blending towards one value at
 // large creepage, and Spiryagin's slope reduction factor k.
 
-#include <vector>
+#include <span>
 
 #include "rollcontact/grid.hpp"
 #include "simplified/kalker_coefficients.hpp"
@@ -28,7 +28,7 @@ struct Creepages {
 /// Ellipse with the area A = n·δxδy of the elements with pn > 0 and the aspect ratio ℓ/w of their
 /// bounding index box: a = √(A/π)·√(ℓ/w), b = √(A/π)·√(w/ℓ). Zero semi-axes when no element is in
 /// contact.
-Ellipse equivalent_ellipse(const Grid& grid, const std::vector<double>& pn);
+Ellipse equivalent_ellipse(const Grid& grid, std::span<const double> pn);
 
 /// Kalker's flexibilities for the ellipse and combined shear modulus G [N/mm²]:
 /// L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G), L3 = πa√(a/b)/(4 C23 G).
@@ -46,9 +46,9 @@ struct SlopeReduction {
   double k0 = 1.0, alpha = 1.0, beta = 1.0;
 };
 
-/// Slope reduction factor k = k0(α∞ + (1 − α∞)/(1 + βε)) with the non-dimensional creepage
-/// ε = G·πab·k0·C11·ν_tot/(4μFN), ν_tot = √(ξ² + ν_φ²), ν_φ = η + φa (or η if smaller). The
-/// effective flexibilities are L/k.
+/// Slope reduction factor k (a, b, C11 of the equivalent ellipse) = k0(α∞ + (1 − α∞)/(1 + βε)) with
+/// the non-dimensional creepage ε = G·πab·k0·C11·ν_tot/(4μFN), ν_tot = √(ξ² + ν_φ²), ν_φ = η + φa
+/// (or η if smaller). The effective flexibilities are L/k.
 double slope_reduction_factor(const SlopeReduction& s, const Ellipse& e, double c11, double g,
                               double mu, double fn, const Creepages& cr);
 

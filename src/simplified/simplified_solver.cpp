@@ -57,8 +57,13 @@ SimplifiedOutcome solve_simplified(const SimplifiedCase& c) {
     if (c.model.blend)
       out.flex = blend_flexibilities(out.flex, e, out.coefficients, c.g, c.mu, c.fn, c.creepages);
   }
-  out.k_eff = slope_reduction_factor(c.model.slope, e, out.coefficients.c11, c.g, c.mu, c.fn,
-                                     c.creepages);
+  // The slope reduction and the strip theory describe the actual contact patch: its equivalent
+  // ellipse (for IPOTCN < 0 close to, but not equal to, the Hertz ellipse).
+  const Ellipse eq = equivalent_ellipse(c.grid, c.pn);
+  const KalkerCoefficients eq_coefficients =
+      eq.a > 0.0 && eq.b > 0.0 ? kalker_coefficients(eq.a / eq.b, c.nu) : out.coefficients;
+  out.k_eff =
+      slope_reduction_factor(c.model.slope, eq, eq_coefficients.c11, c.g, c.mu, c.fn, c.creepages);
   const Flexibilities eff{out.flex.l1 / out.k_eff, out.flex.l2 / out.k_eff,
                           out.flex.l3 / out.k_eff};
 
@@ -91,16 +96,14 @@ SimplifiedOutcome solve_simplified(const SimplifiedCase& c) {
     fr.grid = c.grid;
     fr.pn = c.pn;
     fr.mu = c.mu;
-    fr.ellipse = e;
-    fr.coefficients = out.coefficients;
+    fr.ellipse = eq;
+    fr.coefficients = eq_coefficients;
     fr.g = c.g;
     fr.nu = c.nu;
     fr.fn = c.fn;
     fr.creepages = c.creepages;
     fr.chi = c.chi;
     fr.flex = eff;
-    fr.wx = wx;
-    fr.wy = wy;
     fastrip_correction(fr, out.fields);
   }
   return out;

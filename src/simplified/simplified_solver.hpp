@@ -17,10 +17,10 @@ namespace rollcontact::simplified {
 
 /// Which simplified model and its parameters (the M digit and the M-specific material line).
 struct SimplifiedModel {
-  int m = 3;                 ///< 2: Fastsim with one flexibility; 3: three; 5: FaStrip
-  double flx = 0.0;          ///< M=2: the flexibility [mm³/N]
-  SlopeReduction slope;      ///< K0_MF, ALFAMF, BETAMF
-  bool blend = true;         ///< M=3,5 with prescribed creepages (F=0): blend L1..L3
+  int m = 3;             ///< 2: Fastsim with one flexibility; 3: three; 5: FaStrip
+  double flx = 0.0;      ///< M=2: the flexibility [mm³/N]
+  SlopeReduction slope;  ///< K0_MF, ALFAMF, BETAMF
+  bool blend = true;     ///< M=3,5 with prescribed creepages (F=0): blend L1..L3
 };
 
 /// The model of a Problem: M digit, Problem::materials.model_params (M=2: FLX K0 ALFA BETA;
@@ -31,8 +31,8 @@ SimplifiedModel simplified_model(const Problem& problem);
 /// Rigid shift per step split into the part without spin and the spin part [mm], so that the
 /// spin part can be scaled by L1/L3 and L2/L3 (physics.md §5).
 struct RigidShiftParts {
-  std::vector<double> wx, wy;            ///< ξ, η (and extra rigid slip) part
-  std::vector<double> spin_x, spin_y;    ///< φ part
+  std::vector<double> wx, wy;          ///< ξ, η (and extra rigid slip) part
+  std::vector<double> spin_x, spin_y;  ///< φ part
 };
 RigidShiftParts rigid_shift_parts(const Grid& grid, const Problem& problem,
                                   const EffectiveKinematics& kin, const Creepages& cr);
@@ -40,15 +40,18 @@ RigidShiftParts rigid_shift_parts(const Grid& grid, const Problem& problem,
 struct SimplifiedCase {
   Grid grid;
   std::span<const double> pn;  ///< normal pressure [N/mm²]
-  Ellipse ellipse;             ///< semi-axes for the flexibilities (Hertz or equivalent) [mm]
-  double g = 0.0, nu = 0.0;    ///< combined material [N/mm², -]
-  double mu = 0.3;             ///< friction coefficient [-]
-  double fn = 0.0;             ///< total normal force [N]
+  /// Semi-axes for the flexibilities and the blending [mm]: Hertz values for Hertzian IPOTCN,
+  /// else the equivalent ellipse. Slope reduction and FaStrip always use the equivalent ellipse
+  /// of the contact set (computed here).
+  Ellipse ellipse;
+  double g = 0.0, nu = 0.0;  ///< combined material [N/mm², -]
+  double mu = 0.3;           ///< friction coefficient [-]
+  double fn = 0.0;           ///< total normal force [N]
   SimplifiedModel model;
   Creepages creepages;
-  const RigidShiftParts* shift = nullptr;  ///< for these creepages
-  bool steady = true;                      ///< T=3 (else T=2 with ux_prev, uy_prev)
-  double chi = 0.0;                        ///< rolling direction [rad]
+  const RigidShiftParts* shift = nullptr;    ///< for these creepages
+  bool steady = true;                        ///< T=3 (else T=2 with ux_prev, uy_prev)
+  double chi = 0.0;                          ///< rolling direction [rad]
   std::span<const double> ux_prev, uy_prev;  ///< T=2: u′ of the same particles [mm]
 };
 

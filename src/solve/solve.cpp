@@ -13,6 +13,7 @@
 #include "geometry/discretisation.hpp"
 #include "geometry/hertz.hpp"
 #include "normal/normal_solver.hpp"
+#include "post/subsurface.hpp"
 #include "rollcontact/errors.hpp"
 #include "simplified/prescribed_pressure.hpp"
 #include "simplified/simplified_solver.hpp"
@@ -96,6 +97,9 @@ class CaseSolver {
  private:
   void solve_normal(const Field& px, const Field& py);
   void set_prescribed_pressure();
+  /// FN [N]: the sum of the pressures, or the prescribed force itself with B=2,3 (whose discrete
+  /// pressures sum to FN only up to the discretisation error).
+  double total_normal_force() const;
   tangential::TangentialResult solve_simplified(double cksi, double ceta, double cphi);
   tangential::TangentialResult solve_tangential(double cksi, double ceta, double cphi,
                                                 const Field* px0, const Field* py0);
@@ -171,17 +175,23 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
 void CaseSolver::set_prescribed_pressure() {
   const HertzReport& hz = sol_.hertz;
   if (!hz.present)
-    throw ProblemError(fmt::format(
-        "prescribed pressures B={} need a Hertzian potential contact (IPOTCN < 0)",
-        problem_.digits.b));
+    throw ProblemError(
+        fmt::format("prescribed pressures B={} need a Hertzian potential contact (IPOTCN < 0)",
+                    problem_.digits.b));
   const auto shape = problem_.digits.b == 2 ? simplified::PressureShape::Elliptic
                                             : simplified::PressureShape::Parabolic;
   sol_.pn = simplified::prescribed_pressure(grid_, hz, shape, hz.fn);
   sol_.totals.pen = hz.two_dimensional ? 0.0 : hz.pen;  // 2-D Hertz has no approach
 }
 
+double CaseSolver::total_normal_force() const {
+  if (prescribed_) return sol_.hertz.fn;
+  double fn = 0.0;
+  for (double v : sol_.pn) fn += v;
+  return fn * grid_.element_area();
+}
+
 tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ceta, double cphi) {
-  const std::size_t n = grid_.size();
   const int t = problem_.digits.t;
   simplified::SimplifiedCase c;
   c.grid = grid_;
@@ -191,9 +201,7 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
   c.g = sol_.material.g;
   c.nu = sol_.material.nu;
   c.mu = mu_;
-  double fn = 0.0;
-  for (double v : sol_.pn) fn += v;
-  c.fn = fn * grid_.element_area();
+  c.fn = total_normal_force();
   c.model = simplified::simplified_model(problem_);
   c.creepages = {cksi, ceta, cphi};
   const simplified::RigidShiftParts shift =
@@ -227,7 +235,6 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
   res.converged = true;  // a direct method: one pass
   simplified_ux_ = std::move(r.fields.ux);
   simplified_uy_ = std::move(r.fields.uy);
-  (void)n;
   return res;
 }
 
@@ -273,7 +280,9 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
   }
 
   TangentialSettings settings;
-  settings.eps = problem_.solver.eps;
+  // With prescribed forces the Newton loop stops at |ΔF/(μFN)| ≤ EPS; the tangential solutions
+  // it differentiates must be an order more accurate, or their noise stalls it.
+  settings.eps = problem_.digits.f == 0 ? problem_.solver.eps : 0.1 * problem_.solver.eps;
   settings.max_iterations = problem_.solver.maxgs;
   TangentialSolverKind kind = select_solver(problem_.digits);
   if (kind == TangentialSolverKind::SteadyGS) {
@@ -291,14 +300,10 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
     if (problem_.solver.omega_h > 0.0) settings.omega_h = problem_.solver.omega_h;
     if (problem_.solver.omega_s > 0.0) settings.omega_s = problem_.solver.omega_s;
   }
-  switch (kind) {
-    case TangentialSolverKind::TangCG:
-      return solve_tang_cg(sys, settings, px0, py0);
-    case TangentialSolverKind::SteadyGS:
-      return solve_steady_gs(sys, settings, px0, py0);
-    default:
-      return solve_convex_gs(sys, settings, px0, py0);
-  }
+  // CONTACT's TangCG (T=1,2) and SteadyGS (T=3) roles are both taken by the preconditioned
+  // Jacobi iteration (docs/decisions.md); ConvexGS stays the Gauss–Seidel iteration.
+  if (kind == TangentialSolverKind::ConvexGS) return solve_convex_gs(sys, settings, px0, py0);
+  return solve_preconditioned_jacobi(sys, settings, px0, py0);
 }
 
 void CaseSolver::run() {
@@ -350,9 +355,7 @@ void CaseSolver::run() {
         fx += tang.px[i];
         fy += tang.py[i];
       }
-      double fn = 0.0;
-      for (double v : sol_.pn) fn += v;
-      fn *= grid_.element_area();
+      const double fn = total_normal_force();
       const double scale = mu_ * fn > 0.0 ? 1.0 / (mu_ * fn) : 0.0;
       return std::array<double, 2>{fx * grid_.element_area() * scale,
                                    fy * grid_.element_area() * scale};
@@ -436,7 +439,8 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
     // Fastsim's own displacements u = L·p; no elastic energy (physics.md §7.2, §11).
     s.ux = simplified_ux_;
     s.uy = simplified_uy_;
-    if (!prescribed_) st_.normal_operators(grid_, s.material).product->apply(s.pn.data(), s.un.data());
+    if (!prescribed_)
+      st_.normal_operators(grid_, s.material).product->apply(s.pn.data(), s.un.data());
   } else if (tops_ != nullptr) {
     const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
     double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};
@@ -479,7 +483,7 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
         ++st.nadh;
     }
   }
-  t.fn *= area;
+  t.fn = total_normal_force();
   t.fx *= area;
   t.fy *= area;
   t.mz *= area;
@@ -501,7 +505,6 @@ void check_supported(const Problem& problem) {
   if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
   if (d.c == 3 || d.c == 4 || d.c == 9)
     not_supported(fmt::format("influence coefficients C={}", d.c));
-  if (d.s != 0) not_supported(fmt::format("subsurface stresses S={}", d.s));
   if (d.h != 0) not_supported(fmt::format("temperature H={}", d.h));
   if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
   if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
@@ -526,6 +529,7 @@ Solution solve(const Problem& problem, State& state) {
   CaseSolver(problem, st, sol).run();
 
   // P=3 keeps the stored previous state; otherwise this case becomes the previous one.
+  if (problem.digits.s >= 1) sol.subsurface = post::compute_subsurface(problem, sol);
   if (problem.digits.p != 3 || !st.previous) st.previous = sol;
   return sol;
 }

@@ -132,9 +132,9 @@ TangentialOperators& State::Impl::tangential_operators(const Grid& grid,
                                             &ops->prev_yy, coupled ? &ops->prev_yn : nullptr},
         fft, planning);
   }
-  if (t != 3)
-    ops->preconditioner =
-        std::make_unique<tangential::TangentialPreconditioner>(ops->xx, ops->xy, ops->yy, fft);
+  // Approximate inverse of C_tt (for steady rolling combined with the row sums of (I − T)⁻¹).
+  ops->preconditioner =
+      std::make_unique<tangential::TangentialPreconditioner>(ops->c_xx, ops->c_xy, ops->c_yy, fft);
   ops->a = std::make_unique<elastic::BlockConvolution>(
       2, 2, std::vector<const elastic::Kernel*>{&ops->xx, &ops->xy, &ops->xy, &ops->yy}, fft,
       planning);

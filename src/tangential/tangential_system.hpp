@@ -27,8 +27,11 @@ struct TangentialOperator {
   const elastic::Kernel* yx = nullptr;
   const elastic::Kernel* yy = nullptr;
   elastic::BlockConvolution* product = nullptr;
-  TangentialPreconditioner* preconditioner = nullptr;  ///< approximate A⁻¹ (symmetric A only)
-  bool symmetric = true;                               ///< A = Aᵀ (shift and transient rolling)
+  /// Approximate C_tt⁻¹·G (block circulant). For steady rolling A = (I − T)·C_tt/G with T the
+  /// shift by one element towards the trailing edge, so A⁻¹ ≈ C⁻¹·(I − T)⁻¹ where (I − T)⁻¹ is
+  /// a cumulative sum along each row from the leading edge.
+  TangentialPreconditioner* preconditioner = nullptr;
+  bool symmetric = true;  ///< A = Aᵀ (shift and transient rolling); false: steady rolling
 
   /// (u_x, u_y) = A·(p_x, p_y) over the whole grid.
   void apply(const std::vector<double>& px, const std::vector<double>& py, std::vector<double>& ux,
@@ -73,21 +76,21 @@ using SweepFunction = std::function<void(std::vector<double>& px, std::vector<do
 void iterate_with_acceleration(const TangentialSystem& sys, const TangentialSettings& settings,
                                TangentialResult& res, const SweepFunction& sweep, const char* name);
 
+/// Preconditioned block-Jacobi with Anderson acceleration: each iteration takes a global step
+/// δ = −M·S on the adhesion elements (M ≈ A⁻¹ by FFT) and then solves every element's local
+/// problem exactly against the updated slip. The local solves make the fixed points exactly the
+/// Coulomb solutions; the global step carries the long-range elastic coupling that limits
+/// Gauss–Seidel. Two products with A per iteration. Needs sys.a.preconditioner.
+TangentialResult solve_preconditioned_jacobi(const TangentialSystem& sys,
+                                             const TangentialSettings& settings,
+                                             const std::vector<double>* px0 = nullptr,
+                                             const std::vector<double>* py0 = nullptr);
+
 /// Gauss–Seidel over all contact elements with the exact local element solution (physics.md
-/// §9.3 "ConvexGS"); the slip of all other elements is updated after each element (dense,
-/// O(N_contact²) per sweep): robust for any A, meant for small and medium grids.
+/// §9.3 "ConvexGS"), accelerated by Anderson mixing. Up to 4000 contact elements the slip of
+/// all others is updated after each element (exact, O(N²) per sweep); above, only within two
+/// rows, the rest being refreshed by an FFT product per sweep.
 TangentialResult solve_convex_gs(const TangentialSystem& sys, const TangentialSettings& settings,
-                                 const std::vector<double>* px0 = nullptr,
-                                 const std::vector<double>* py0 = nullptr);
-
-/// Projected, preconditioned nonlinear CG for symmetric A (shifts, transient rolling).
-TangentialResult solve_tang_cg(const TangentialSystem& sys, const TangentialSettings& settings,
-                               const std::vector<double>* px0 = nullptr,
-                               const std::vector<double>* py0 = nullptr);
-
-/// Gauss–Seidel for steady rolling: rows swept from the leading to the trailing edge, exact
-/// within a row, rows coupled through an FFT update per sweep.
-TangentialResult solve_steady_gs(const TangentialSystem& sys, const TangentialSettings& settings,
                                  const std::vector<double>* px0 = nullptr,
                                  const std::vector<double>* py0 = nullptr);
 

@@ -76,7 +76,8 @@ constexpr MalformedCase kCases[] = {
      true},
     {"unterminated_quote.inp", 9, "unterminated quoted string", false},
     {"module_2.inp", 2, "module number 2 is not valid", false},
-    {"module_1.inp", 2, "module 1 (wheel/rail) input is not supported yet", false},
+    // module_1.inp holds a module-3 case under a module-1 line: F=2 does not exist in module 1.
+    {"module_1.inp", 3, "digit F=2 is not a valid value (0, 1, 3)", false},
     {"reid_1000.inp", 2, "REID = 1000 outside 0..999", false},
     {"cpid_0.inp", 2, "CPID = 0 outside 1..9", false},
     {"word1_too_many_digits.inp", 3, "control word 1 (PBTNFS) has more than 7 digits", false},
@@ -116,6 +117,25 @@ constexpr MalformedCase kCases[] = {
     {"c4_variant_5.inp", 9, "VARIANT = 5 outside 1..4", false},
     {"z1_first_case.inp", 4, "Z=1 uses the stored undeformed distance, but no IBASE block was read",
      false},
+    // Module 1 (wheel/rail); profiles in malformed/profiles/.
+    {"m1_missing_profile.inp", 11, "rail profile file 'profiles/nonexistent.prr' not found", false},
+    {"m1_scaleyz_too_large.inp", 14, "outside 5..500 mm (check SCALEYZ = 100)", false},
+    {"m1_digit_c1_3.inp", 3, "digit C1=3 is not a valid value (0, 1, 4, 5)", false},
+    {"m1_f1_with_n0.inp", 3, "F=1 (prescribed FX_WS) requires N=1", false},
+    {"m1_dsep_below_dcomb.inp", 9, "D_SEP = 3 must be at least D_COMB = 4", false},
+    {"m1_dqrel_out_of_range.inp", 9, "DQREL = 20 outside [5e-07, 10]", false},
+    {"m1_truncated_wheelset.inp", 15,
+     "end of file while reading the wheelset position line (S_WS Y_WS FZ ROLL YAW PITCH)", false},
+    {"m1_first_case_z0.inp", 4,
+     "Z=0 keeps the rail profile, but none was read for result element 0", false},
+    {"m1_digit_b2.inp", 3, "digit B=2 is not a valid value (0, 1, 5, 6)", false},
+    {"m1_nomradw_zero.inp", 13, "NOMRADW = 0 must be at least 0.001", false},
+    {"m1_mirrory_2.inp", 11, "MIRRORY = 2 outside -1..1", false},
+    {"m1_fz_zero.inp", 15, "FZ = 0 must be positive (N=1)", false},
+    {"m1_slcs_with_gaught.inp", 11, "a rail slices file (.slcs) requires GAUGHT ≤ 0", false},
+    {"m1_nvf_not_increasing.inp", 9, "friction control points must be strictly increasing", false},
+    {"m1_e0_n_changes.inp", 19, "E=0 (keep wheelset) while N changes from 1 to 0", false},
+    {"m1_prfopt_bad_kinklow.inp", 12, "expected an angle for KINKLOW", false},
 };
 
 // gtest prints the file name instead of the bytes of the struct.

@@ -1,0 +1,98 @@
+// Benchmark of the exact tangential solvers on the wheel/rail-like patch of
+// bench/wheel_rail_patch.hpp (IBASE=2 profile, dx = dy = 0.1 mm, approach prescribed, μ = 0.3):
+//  - shift (T=1, TangCG) with shifts ξ = 0.0005 mm, φ = 0.0003 rad;
+//  - steady rolling (T=3, SteadyGS) with creepages ξ = 0.0005, φ = 0.0003 rad/mm;
+//  - steady rolling with the forces prescribed (F=2, the forces of the creepage-driven case).
+// Grids 71×81, 143×163, 287×323. Reports time, tangential iterations and Newton iterations.
+//
+// Reference (CONTACT, gfortran, one thread): shift 0.20 / 1.13 / 11.1 s; steady rolling
+// 0.62 / 4.84 / 40.7 s; steady rolling with forces prescribed 6.2 / 58 s (first two grids).
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "rollcontact/solve.hpp"
+#include "wheel_rail_patch.hpp"
+
+namespace {
+
+using namespace rollcontact;
+
+struct Size {
+  int mx, my;
+  double scale;
+};
+constexpr Size sizes[] = {{71, 81, 1.0}, {143, 163, 2.0}, {287, 323, 4.0}};
+
+Problem tangential_case(const Size& size, int t) {
+  Problem p = bench::wheel_rail_patch(size.mx, size.my, size.scale);
+  p.digits.t = t;
+  p.friction.fstat = p.friction.fkin = 0.3;
+  p.kinematics.cksi = 0.0005;
+  p.kinematics.cphi = 0.0003;
+  p.kinematics.chi = 0.0;
+  p.kinematics.dq = 0.1;
+  p.kinematics.veloc = 10000.0;
+  p.solver.maxgs = 999;
+  p.solver.maxin = 100;
+  p.solver.maxnr = 30;
+  return p;
+}
+
+void report(benchmark::State& bstate, const Solution& sol, const Size& size) {
+  bstate.counters["tang_iterations"] = sol.solver.tangential_iterations;
+  bstate.counters["newton_iterations"] = sol.solver.newton_iterations;
+  bstate.counters["ncon"] = sol.statistics.ncon;
+  bstate.counters["nslip"] = sol.statistics.nslip;
+  bstate.counters["converged"] = sol.solver.converged ? 1 : 0;
+  bstate.SetLabel(std::to_string(size.mx) + "x" + std::to_string(size.my));
+}
+
+void run(benchmark::State& bstate, const Problem& problem, const Size& size) {
+  State state;
+  Solution sol = solve(problem, state);  // builds and caches the operators
+  for (auto _ : bstate) {
+    sol = solve(problem, state);
+    benchmark::DoNotOptimize(sol.totals.fx);
+  }
+  report(bstate, sol, size);
+}
+
+void BM_Shift(benchmark::State& bstate) {
+  const Size size = sizes[bstate.range(0)];
+  run(bstate, tangential_case(size, 1), size);
+}
+
+void BM_SteadyRolling(benchmark::State& bstate) {
+  const Size size = sizes[bstate.range(0)];
+  run(bstate, tangential_case(size, 3), size);
+}
+
+void BM_SteadyRollingForcesPrescribed(benchmark::State& bstate) {
+  const Size size = sizes[bstate.range(0)];
+  Problem creep = tangential_case(size, 3);
+  State probe;
+  const Solution reference = solve(creep, probe);
+  Problem forces = creep;
+  forces.digits.f = 2;
+  forces.kinematics.fx_rel = reference.totals.fx / (0.3 * reference.totals.fn);
+  forces.kinematics.fy_rel = reference.totals.fy / (0.3 * reference.totals.fn);
+  run(bstate, forces, size);
+}
+
+BENCHMARK(BM_Shift)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_SteadyRolling)
+    ->DenseRange(0, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK(BM_SteadyRollingForcesPrescribed)
+    ->DenseRange(0, 1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

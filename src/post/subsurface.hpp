@@ -1,0 +1,17 @@
+#pragma once
+// Subsurface displacements and stresses of a solved module-3 case (spec/physics.md §16).
+
+#include <vector>
+
+#include "rollcontact/problem.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::post {
+
+/// Evaluates every block of problem.subsurface at the tractions of `solution` by direct
+/// superposition of the closed-form rectangle solutions over the loaded grid nodes (cost:
+/// points × loaded nodes). Points with z ≥ 0 use body 1 (G₁, ν₁) under the tractions as
+/// solved; z < 0 use body 2 (G₂, ν₂) under the opposite tractions. Returns one result per block.
+std::vector<SubsurfaceResult> compute_subsurface(const Problem& problem, const Solution& solution);
+
+}  // namespace rollcontact::post
