@@ -210,7 +210,7 @@ void iterate_with_acceleration(const TangentialSystem& sys, const TangentialSett
       x = g;
       continue;
     }
-    // Safeguard: a growing fixed-point residual restarts the acceleration from the plain sweep.
+    // Safeguard: a growing fixed-point residual restarts the acceleration from the plain map.
     if (change_sq > 4.0 * best) {
       anderson.reset();
       x = g;

@@ -1,5 +1,6 @@
 // Preconditioned block-Jacobi iteration with Anderson acceleration (see tangential_system.hpp).
 
+#include <algorithm>
 #include <cmath>
 
 #include "tangential/element_problem.hpp"
@@ -13,7 +14,8 @@ class PreconditionedJacobi {
  public:
   explicit PreconditionedJacobi(const TangentialSystem& sys) : sys_(sys) {
     const std::size_t n = sys.grid.size();
-    for (auto* v : {&sx_, &sy_, &rx_, &ry_, &zx_, &zy_, &qx_, &qy_}) v->assign(n, 0.0);
+    for (auto* v : {&sx_, &sy_, &rx_, &ry_, &zx_, &zy_, &qx_, &qy_, &dx_, &dy_, &ax_, &ay_})
+      v->assign(n, 0.0);
     adhesion_.assign(n, 0);
     d_[0] = sys.a.xx->at(0, 0);
     d_[1] = sys.a.xy->at(0, 0);
@@ -39,30 +41,10 @@ class PreconditionedJacobi {
         ry_[i] = -sy_[i];
       }
     }
-    if (!sys_.a.symmetric) cumulative_sum_from_leading_edge();
-    sys_.a.preconditioner->apply(rx_.data(), ry_.data(), zx_.data(), zy_.data());
-    for (std::size_t i = 0; i < n; ++i)
-      if (!adhesion_[i]) zx_[i] = zy_[i] = 0.0;
-    sys_.a.apply(zx_, zy_, qx_, qy_);
-    // Symmetric A: the step length that minimises the energy along z (the restricted
-    // preconditioned step overshoots when slip elements are held fixed). Steady rolling has no
-    // energy; the full step is taken there.
-    double theta = 1.0;
-    if (sys_.a.symmetric) {
-      double rz = 0.0, zq = 0.0;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (!adhesion_[i]) continue;
-        rz += rx_[i] * zx_[i] + ry_[i] * zy_[i];
-        zq += zx_[i] * qx_[i] + zy_[i] * qy_[i];
-      }
-      theta = zq > 0.0 ? rz / zq : 0.0;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      px[i] += theta * zx_[i];
-      py[i] += theta * zy_[i];
-      qx_[i] *= theta;
-      qy_[i] *= theta;
-    }
+    if (sys_.a.symmetric)
+      adhesion_cg_steps(px, py);
+    else
+      steady_step(px, py);
     // Adhesion elements keep the globally corrected traction (a local Jacobi correction would
     // overshoot: the diagonal of A is small next to its row sums), projected onto the bound if
     // they exceed it; slip elements solve their local problem against the updated slip.
@@ -85,6 +67,61 @@ class PreconditionedJacobi {
   }
 
  private:
+  /// Symmetric A: a few preconditioned CG steps for A_HH δ = r_H on the adhesion set H with the
+  /// slip elements held fixed (a single preconditioned step overshoots or stalls on large grids:
+  /// the restricted inverse is only approximated by M). Accumulates A·δ in (qx_, qy_).
+  void adhesion_cg_steps(std::vector<double>& px, std::vector<double>& py) {
+    const std::size_t n = sys_.grid.size();
+    std::fill(qx_.begin(), qx_.end(), 0.0);
+    std::fill(qy_.begin(), qy_.end(), 0.0);
+    double rz_old = 0.0;
+    for (int step = 0; step < inner_steps; ++step) {
+      sys_.a.preconditioner->apply(rx_.data(), ry_.data(), zx_.data(), zy_.data());
+      double rz = 0.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (!adhesion_[i]) zx_[i] = zy_[i] = 0.0;
+        rz += rx_[i] * zx_[i] + ry_[i] * zy_[i];
+      }
+      if (!(rz > 0.0)) break;
+      const double beta = step == 0 ? 0.0 : rz / rz_old;
+      rz_old = rz;
+      for (std::size_t i = 0; i < n; ++i) {
+        dx_[i] = zx_[i] + beta * dx_[i];
+        dy_[i] = zy_[i] + beta * dy_[i];
+      }
+      sys_.a.apply(dx_, dy_, ax_, ay_);
+      double dq = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (adhesion_[i]) dq += dx_[i] * ax_[i] + dy_[i] * ay_[i];
+      if (!(dq > 0.0)) break;
+      const double alpha = rz / dq;
+      for (std::size_t i = 0; i < n; ++i) {
+        px[i] += alpha * dx_[i];
+        py[i] += alpha * dy_[i];
+        qx_[i] += alpha * ax_[i];
+        qy_[i] += alpha * ay_[i];
+        if (adhesion_[i]) {
+          rx_[i] -= alpha * ax_[i];
+          ry_[i] -= alpha * ay_[i];
+        }
+      }
+    }
+  }
+
+  /// Steady rolling: one step with M = C⁻¹ (I − T)⁻¹ (no energy to minimise; full step).
+  void steady_step(std::vector<double>& px, std::vector<double>& py) {
+    const std::size_t n = sys_.grid.size();
+    cumulative_sum_from_leading_edge();
+    sys_.a.preconditioner->apply(rx_.data(), ry_.data(), zx_.data(), zy_.data());
+    for (std::size_t i = 0; i < n; ++i)
+      if (!adhesion_[i]) zx_[i] = zy_[i] = 0.0;
+    sys_.a.apply(zx_, zy_, qx_, qy_);
+    for (std::size_t i = 0; i < n; ++i) {
+      px[i] += zx_[i];
+      py[i] += zy_[i];
+    }
+  }
+
   /// r ← (I − T)⁻¹ r: sums along each row from the leading edge (χ = 0: high ix) downwards.
   void cumulative_sum_from_leading_edge() {
     const Grid& g = sys_.grid;
@@ -104,7 +141,8 @@ class PreconditionedJacobi {
 
   const TangentialSystem& sys_;
   double d_[4];
-  std::vector<double> sx_, sy_, rx_, ry_, zx_, zy_, qx_, qy_;
+  static constexpr int inner_steps = 2;
+  std::vector<double> sx_, sy_, rx_, ry_, zx_, zy_, qx_, qy_, dx_, dy_, ax_, ay_;
   std::vector<char> adhesion_;
 };
 
