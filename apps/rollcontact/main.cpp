@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   add(add_example_command);
   add(add_convert_command);
   add(add_validate_command);
+  add(add_table_command);
 
   CLI11_PARSE(app, argc, argv);
 

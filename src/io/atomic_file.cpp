@@ -12,6 +12,17 @@ namespace rollcontact::io {
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
   namespace fs = std::filesystem;
+  // A device, pipe or symbolic link (/dev/null, /dev/stdout, a link into another folder) is
+  // written through, never replaced: renaming over it would destroy it.
+  std::error_code status_error;
+  const fs::file_status st = fs::symlink_status(path, status_error);
+  if (!status_error && fs::exists(st) && !fs::is_regular_file(st)) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    out.flush();
+    if (!out) throw Error(fmt::format("cannot write '{}'", path.string()));
+    return;
+  }
   // The temporary lives in the target folder so that the final rename never crosses file
   // systems (rename is atomic only within one). A random suffix keeps parallel writers apart.
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");

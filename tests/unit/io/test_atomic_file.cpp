@@ -61,3 +61,10 @@ TEST(AtomicFile, TargetIsAFolderThrowsAndCleansUp) {
 
 }  // namespace
 }  // namespace rollcontact::io
+
+TEST(AtomicFile, WritesThroughDevicesInsteadOfReplacingThem) {
+  // Renaming a temporary over /dev/null would replace the device with a regular file.
+  rollcontact::io::write_file_atomically("/dev/null", "nothing\n");
+  EXPECT_FALSE(std::filesystem::is_regular_file("/dev/null"));
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+}

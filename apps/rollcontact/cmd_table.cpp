@@ -1,0 +1,158 @@
+// `rollcontact table`: the 3220-case creep-force table of Vollebregt, Iwnicki, Xie & Shackleton
+// (VSD 2012) with one method, written as CSV; with --reference, error statistics of an
+// approximate method against an exact table (src/io/creep_table*.hpp).
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "commands.hpp"
+#include "io/atomic_file.hpp"
+#include "io/creep_table.hpp"
+#include "io/creep_table_stats.hpp"
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::cli {
+
+namespace {
+
+struct TableOptions {
+  std::string method = "exact";
+  int bound = -1;
+  int mx = 11;
+  double eps = 1e-5;
+  std::string output;
+  std::string reference;
+  std::string stats;
+  std::string cases;
+  int threads = 0;
+  bool quiet = false;
+};
+
+std::vector<io::TableRow> read_reference(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot open the reference table");
+  return io::read_table_csv(in, path);
+}
+
+/// Atomic write for regular files; direct write for devices, pipes and symbolic links
+/// (-o /dev/null, /dev/stdout): the atomic writer's rename would replace the node itself.
+void write_output(const std::string& path, const std::string& content) {
+  std::error_code ec;
+  const auto st = std::filesystem::symlink_status(path, ec);
+  if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+    std::ofstream out(path, std::ios::binary);
+    out << content;
+    out.flush();
+    if (!out) throw Error("cannot write " + path);
+    return;
+  }
+  io::write_file_atomically(path, content);
+}
+
+int run_table_command(const TableOptions& o) {
+  io::TableSettings settings;
+  settings.method = io::parse_table_method(o.method);
+  settings.bound = o.bound;
+  settings.mx = o.mx;
+  settings.eps = o.eps;
+  const int bound = io::effective_bound(settings);
+  if (bound != 0 && bound != 2 && bound != 3)
+    throw InputError("--bound", 0, fmt::format("must be 0, 2 or 3, got {}", bound));
+  if (settings.mx < 5) throw InputError("--mx", 0, fmt::format("must be at least 5, got {}", o.mx));
+  // Read the reference first: a bad file should fail before an hour of computing.
+  std::vector<io::TableRow> reference;
+  if (!o.reference.empty()) reference = read_reference(o.reference);
+
+  const std::vector<io::TableCase> all = io::table_cases();
+  std::vector<io::TableCase> cases;
+  for (int number : io::parse_case_selection(o.cases, all.size()))
+    cases.push_back(all[static_cast<std::size_t>(number - 1)]);
+  const unsigned hw = std::thread::hardware_concurrency();
+  const int threads = o.threads > 0 ? o.threads : static_cast<int>(hw > 0 ? hw : 1);
+
+  const auto wall0 = std::chrono::steady_clock::now();
+  const std::clock_t cpu0 = std::clock();
+  auto progress = [&](std::size_t done) {
+    const double t =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    fmt::print(stderr, "\rtable {}: {}/{} cases, {:.1f} s", o.method, done, cases.size(), t);
+    std::fflush(stderr);
+  };
+  const std::vector<io::TableRow> rows =
+      io::run_table(cases, settings, threads,
+                    o.quiet ? std::function<void(std::size_t)>{} : std::function(progress));
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
+  if (!o.quiet) fmt::print(stderr, "\n");
+
+  std::ostringstream csv;
+  io::write_table_csv(csv, rows);
+  write_output(o.output, csv.str());
+
+  std::vector<const io::TableRow*> failed;
+  for (const auto& r : rows)
+    if (!r.converged) failed.push_back(&r);
+  const double n = static_cast<double>(rows.size());
+  if (!o.quiet) {
+    fmt::print("table {} (B={}, mx={}, {} threads): {} cases, {} not converged -> {}\n", o.method,
+               bound, settings.mx, threads, rows.size(), failed.size(), o.output);
+    fmt::print("time: wall {:.3f} s, CPU {:.3f} s; per case {:.4g} ms CPU, {:.4g} ms wall\n", wall,
+               cpu, 1e3 * cpu / n, 1e3 * wall / n);
+    for (const auto* r : failed)
+      fmt::print("  not converged: case {} (a/b {:g}, spin {:g}, angle {:g}, magnitude {:g}): {}\n",
+                 r->tc.number, r->tc.a_over_b, r->tc.spin, r->tc.angle_deg, r->tc.magnitude,
+                 r->message);
+  }
+
+  if (!reference.empty()) {
+    const io::TableStatistics st = io::compare_tables(rows, reference);
+    const std::string title =
+        fmt::format("{} B={} mx={} against {}", o.method, bound, settings.mx, o.reference);
+    if (!o.quiet) fmt::print("\n{}", io::format_statistics_text(st, title));
+    if (!o.stats.empty()) write_output(o.stats, io::format_statistics_markdown(st, title));
+  }
+  return failed.empty() ? exit_ok : exit_case_failed;
+}
+
+}  // namespace
+
+CommandRunner add_table_command(CLI::App& app) {
+  auto opts = std::make_shared<TableOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "table",
+      "Creep-force table of Vollebregt et al. (VSD 2012): 3220 steady-rolling Hertzian cases "
+      "with one method, as CSV; with --reference, error statistics against an exact table");
+  cmd->add_option("--method", opts->method, "exact | fastsim1 | fastsim3 | fastrip")
+      ->check(CLI::IsMember({"exact", "fastsim1", "fastsim3", "fastrip"}))
+      ->capture_default_str();
+  cmd->add_option("--bound", opts->bound,
+                  "normal pressure: 0 exact normal solve, 2 elliptic, 3 parabolic (default 0 for "
+                  "exact, 2 for the approximate methods)")
+      ->check(CLI::IsMember({0, 2, 3}));
+  cmd->add_option("--mx", opts->mx, "elements per axis (mx = my; mx-4 over the Hertz ellipse)")
+      ->capture_default_str();
+  cmd->add_option("--eps", opts->eps, "solver tolerance of the exact theory")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", opts->output, "CSV file to write")->required();
+  cmd->add_option("--reference", opts->reference,
+                  "CSV of --method exact with the same mx: print error statistics against it");
+  cmd->add_option("--stats", opts->stats, "also write the error statistics as Markdown");
+  cmd->add_option("--cases", opts->cases, "subset of case numbers, e.g. 1-50,100 (default all)");
+  cmd->add_option("--threads", opts->threads, "worker threads (default: all cores)");
+  cmd->add_flag("-q,--quiet", opts->quiet, "no progress line and no summary");
+  return [opts] { return run_table_command(*opts); };
+}
+
+}  // namespace rollcontact::cli
