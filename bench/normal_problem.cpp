@@ -9,6 +9,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <complex>
 #include <vector>
@@ -61,10 +62,15 @@ void BM_NormalProblem(benchmark::State& bstate) {
   const double pair = fft_pair_seconds(sol.grid, options.fft_planning);
   bstate.counters["cg_iterations"] = sol.solver.normal_iterations;
   bstate.counters["products"] = sol.solver.normal_products;
+  bstate.counters["coarse_its"] = sol.solver.normal_coarse_iterations;
   bstate.counters["ncon"] = sol.statistics.ncon;
   bstate.counters["npot"] = sol.statistics.npot;
   bstate.counters["converged"] = sol.solver.converged ? 1 : 0;
   bstate.counters["fft_pair_ms"] = pair * 1e3;
+  const double per_iteration =
+      sol.solver.normal_iteration_seconds / std::max(1, sol.solver.normal_iterations);
+  bstate.counters["ms_per_cg_it"] = per_iteration * 1e3;
+  bstate.counters["it_per_pair"] = per_iteration / pair;
   bstate.SetLabel(std::to_string(size.mx) + "x" + std::to_string(size.my) +
                   (bstate.range(1) ? " fftw-measure" : " fftw-estimate"));
 }

@@ -73,8 +73,10 @@ struct SolverReport {
   std::string message;        ///< why not converged / warnings
   int normal_iterations = 0;  ///< total CG iterations of the normal solver
   int normal_active_set_changes = 0;
-  int normal_products = 0;       ///< influence-matrix products (FFT convolutions) used
-  double normal_residual = 0.0;  ///< final relative change ||Δp||/||p||
+  int normal_coarse_iterations = 0;  ///< CG iterations on coarser grids (nested-iteration start)
+  int normal_products = 0;           ///< influence-matrix products (FFT convolutions) used
+  double normal_iteration_seconds = 0.0;  ///< wall time of the fine-grid CG iterations [s]
+  double normal_residual = 0.0;           ///< final relative change ||Δp||/||p||
   int tangential_iterations = 0;
   int newton_iterations = 0;
 };

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -174,6 +175,7 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
   // elements and the unloaded ones that penetrate (negative gradient); CG runs on F and restarts
   // whenever F changes. New elements thus enter with the line-searched step α·z rather than a
   // local guess, which keeps large active-set changes stable.
+  const auto loop_start = std::chrono::steady_clock::now();
   for (int it = 1; it <= settings.max_iterations; ++it) {
     // Gap (gradient) and free set. With prescribed force the approach is the mean of h + u over
     // the loaded elements (the multiplier of the force constraint).
@@ -281,6 +283,9 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
       break;
     }
   }
+
+  res.iteration_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
 
   // Final consistent displacement, approach, force and contact count.
   a_.apply(p.data(), u.data());

@@ -34,10 +34,11 @@ struct NormalResult {
   double pen = 0.0;        ///< approach [mm] (given or solved)
   double fn = 0.0;         ///< total force [N] (given or resulting)
   int contact_elements = 0;
-  int iterations = 0;     ///< CG iterations
-  int set_changes = 0;    ///< iterations in which the contact set changed
-  int products = 0;       ///< applications of A (FFT products) in total
-  double residual = 0.0;  ///< final ||Δp||_rms / ||p||_rms
+  int iterations = 0;              ///< CG iterations
+  int set_changes = 0;             ///< iterations in which the contact set changed
+  int products = 0;                ///< applications of A (FFT products) in total
+  double iteration_seconds = 0.0;  ///< wall time spent in the CG iterations (benchmarks)
+  double residual = 0.0;           ///< final ||Δp||_rms / ||p||_rms
   bool converged = false;
   std::string message;
 };

@@ -86,6 +86,48 @@ double norm(const Field& a) {
   return std::sqrt(s);
 }
 
+/// Nested iteration for large grids: the same normal problem on a grid with elements twice as
+/// large (h averaged over the 2×2 fine elements), solved — itself started from a coarser grid —
+/// and prolongated element-wise. Returns an empty field when the grid is too small to gain.
+/// The fine solve then starts close to its solution, with few active-set changes.
+Field coarse_grid_start(State::Impl& st, int level, const Grid& grid, const Field& h,
+                        normal::NormalLoad load, double value, const CombinedMaterial& material,
+                        const normal::NormalSettings& settings, int& iterations) {
+  constexpr std::size_t min_elements = 20000;  // below this a coarse start does not pay
+  if (grid.size() < min_elements || grid.mx < 16 || grid.my < 16) return {};
+  const Grid coarse{(grid.mx + 1) / 2, (grid.my + 1) / 2, grid.xl,
+                    grid.yl,           2.0 * grid.dx,     2.0 * grid.dy};
+  Field ch(coarse.size(), geometry::excluded_distance);
+  for (int jy = 0; jy < coarse.my; ++jy)
+    for (int jx = 0; jx < coarse.mx; ++jx) {
+      double sum = 0.0;
+      int count = 0;
+      for (int iy = 2 * jy; iy < std::min(2 * jy + 2, grid.my); ++iy)
+        for (int ix = 2 * jx; ix < std::min(2 * jx + 2, grid.mx); ++ix) {
+          const double v = h[grid.index(ix, iy)];
+          if (v < geometry::excluded_distance) {
+            sum += v;
+            ++count;
+          }
+        }
+      if (count > 0) ch[coarse.index(jx, jy)] = sum / count;
+    }
+  Field start =
+      coarse_grid_start(st, level + 1, coarse, ch, load, value, material, settings, iterations);
+  NormalOperators& ops = st.coarse_normal_operators(level, coarse, material);
+  normal::NormalSolver solver(coarse, *ops.product, ops.kernel, *ops.preconditioner);
+  const normal::NormalResult r = solver.solve(
+      ch, load, value, settings, start.empty() ? nullptr : &start, material.nu, material.g);
+  iterations += r.iterations;
+  if (!r.converged) return {};  // only a starting value: fall back to the geometric estimate
+  Field fine(grid.size(), 0.0);
+  for (int iy = 0; iy < grid.my; ++iy)
+    for (int ix = 0; ix < grid.mx; ++ix)
+      if (h[grid.index(ix, iy)] < geometry::excluded_distance)
+        fine[grid.index(ix, iy)] = r.pn[coarse.index(ix / 2, iy / 2)];
+  return fine;
+}
+
 /// Everything the normal and tangential sub-solves of one case share.
 class CaseSolver {
  public:
@@ -153,10 +195,20 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     if (std::any_of(start.begin(), start.end(), [](double v) { return v > 0.0; })) initial = &start;
   }
 
-  normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner);
   normal::NormalSettings settings;
   settings.eps = problem_.solver.eps;
   settings.max_iterations = problem_.solver.maxgs;
+  const normal::NormalLoad load =
+      force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach;
+  if (initial == nullptr) {
+    int coarse_iterations = 0;
+    start = coarse_grid_start(st_, 1, grid_, h_star, load, load_value, sol_.material, settings,
+                              coarse_iterations);
+    sol_.solver.normal_coarse_iterations += coarse_iterations;
+    if (!start.empty()) initial = &start;
+  }
+
+  normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner);
   normal::NormalResult r =
       solver.solve(h_star, force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach,
                    load_value, settings, initial, sol_.material.nu, sol_.material.g);
@@ -165,6 +217,7 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   sol_.solver.normal_iterations += r.iterations;
   sol_.solver.normal_active_set_changes += r.set_changes;
   sol_.solver.normal_products += r.products;
+  sol_.solver.normal_iteration_seconds += r.iteration_seconds;
   sol_.solver.normal_residual = r.residual;
   if (!r.converged) {
     sol_.solver.converged = false;

@@ -16,19 +16,38 @@ const SolveOptions& State::options() const noexcept {
   return impl_->options;
 }
 
+namespace {
+
+std::unique_ptr<NormalOperators> make_normal_operators(const Grid& grid,
+                                                       const CombinedMaterial& material,
+                                                       const SolveOptions& options) {
+  auto ops = std::make_unique<NormalOperators>();
+  ops->grid = grid;
+  ops->material = material;
+  ops->kernel = elastic::make_kernel(elastic::Component::nn, grid, material);
+  ops->product =
+      std::make_unique<elastic::FftConvolution>(ops->kernel, options.fft, options.fft_planning);
+  ops->preconditioner = std::make_unique<normal::CirculantPreconditioner>(
+      grid, material, options.fft, options.fft_planning);
+  return ops;
+}
+
+}  // namespace
+
 NormalOperators& State::Impl::normal_operators(const Grid& grid, const CombinedMaterial& material) {
-  if (!normal || !same_grid_and_material(normal->grid, grid, normal->material, material)) {
-    auto ops = std::make_unique<NormalOperators>();
-    ops->grid = grid;
-    ops->material = material;
-    ops->kernel = elastic::make_kernel(elastic::Component::nn, grid, material);
-    ops->product =
-        std::make_unique<elastic::FftConvolution>(ops->kernel, options.fft, options.fft_planning);
-    ops->preconditioner = std::make_unique<normal::CirculantPreconditioner>(
-        grid, material, options.fft, options.fft_planning);
-    normal = std::move(ops);
-  }
+  if (!normal || !same_grid_and_material(normal->grid, grid, normal->material, material))
+    normal = make_normal_operators(grid, material, options);
   return *normal;
+}
+
+NormalOperators& State::Impl::coarse_normal_operators(int level, const Grid& grid,
+                                                      const CombinedMaterial& material) {
+  const std::size_t k = static_cast<std::size_t>(level - 1);
+  if (coarse_normal.size() <= k) coarse_normal.resize(k + 1);
+  auto& ops = coarse_normal[k];
+  if (!ops || !same_grid_and_material(ops->grid, grid, ops->material, material))
+    ops = make_normal_operators(grid, material, options);
+  return *ops;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "elastic/block_convolution.hpp"
 #include "elastic/convolution.hpp"
@@ -57,12 +58,18 @@ struct TangentialOperators {
 
 struct State::Impl {
   SolveOptions options;
-  std::unique_ptr<NormalOperators> normal;          ///< rebuilt when grid or material change
+  std::unique_ptr<NormalOperators> normal;  ///< rebuilt when grid or material change
+  /// Operators of the coarser grids of the nested-iteration start, per level (1 = twice as
+  /// coarse as `normal`).
+  std::vector<std::unique_ptr<NormalOperators>> coarse_normal;
   std::unique_ptr<TangentialOperators> tangential;  ///< rebuilt when grid, material or step change
   std::optional<Solution> previous;  ///< last solved case (P=0 continuation, warm starts)
 
   /// The normal operators for this grid and material, built on first use and kept.
   NormalOperators& normal_operators(const Grid& grid, const CombinedMaterial& material);
+  /// The same for coarse level `level` ≥ 1.
+  NormalOperators& coarse_normal_operators(int level, const Grid& grid,
+                                           const CombinedMaterial& material);
   /// The tangential operators for T = 1, 2, 3 with the rolling step (shift_x, shift_y) [mm].
   TangentialOperators& tangential_operators(const Grid& grid, const CombinedMaterial& material,
                                             int t, double shift_x, double shift_y);
