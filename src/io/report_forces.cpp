@@ -72,16 +72,19 @@ void write_force_block(std::ostream& os, const Problem& problem, const Solution&
   line(os, values);
 }
 
-void write_sensitivities(std::ostream& os, const Problem& problem) {
-  // The Solution carries no sensitivities; CONTACT prints 0 for "not calculated".
+void write_sensitivities(std::ostream& os, const Problem& problem, const Solution& solution) {
+  // Only the force iteration (F=1,2) computes derivatives; CONTACT prints 0 for "not calculated".
   const std::string zero = fmt_sig(12, 3, 3, 0.0);
+  const Sensitivities& d = solution.sensitivities;
+  auto value = [](double v) { return fmt_sig(12, 3, 3, v); };
   line(os, "");
   if (problem.digits.t != 0) {
     line(os, " THE SENSITIVITIES. (FX,FY) MEANS: (FX,FY)/FN/FSTAT.");
     line(os, " A ZERO ENTRY MEANS THAT IT HAS NOT BEEN CALCULATED.");
     line(os, "         DF/DPEN     DF/DKSI     DF/DETA     DF/DPHI");
-    for (const char* row : {"FN", "FX", "FY"})
-      line(os, fmt::format("   {} {}{}{}{}", row, zero, zero, zero, zero));
+    line(os, fmt::format("   FN {}{}{}{}", zero, zero, zero, zero));
+    line(os, fmt::format("   FX {}{}{}{}", zero, value(d.dfx_dksi), value(d.dfx_deta), zero));
+    line(os, fmt::format("   FY {}{}{}{}", zero, value(d.dfy_dksi), value(d.dfy_deta), zero));
   } else {
     line(os, " THE SENSITIVITIES.");
     line(os, " A ZERO MEANS THAT IT HAS NOT BEEN CALCULATED.");

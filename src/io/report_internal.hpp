@@ -21,7 +21,7 @@ void write_parameter_blocks(std::ostream& os, const Problem& problem, const Solu
 
 /// Force block (O >= 1), sensitivities and statistics (O >= 2), §3.3–3.4.
 void write_force_block(std::ostream& os, const Problem& problem, const Solution& solution);
-void write_sensitivities(std::ostream& os, const Problem& problem);
+void write_sensitivities(std::ostream& os, const Problem& problem, const Solution& solution);
 void write_statistics(std::ostream& os, const Problem& problem, const Solution& solution);
 
 /// The O = 5 table of quantities per contact element, §3.6.

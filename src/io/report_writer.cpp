@@ -88,7 +88,7 @@ void write_case_report(std::ostream& os, const Problem& problem, const Solution&
   if (d.o >= 2) report::write_parameter_blocks(os, problem, solution);
   report::write_force_block(os, problem, solution);
   if (d.o >= 2) {
-    report::write_sensitivities(os, problem);
+    report::write_sensitivities(os, problem, solution);
     report::write_statistics(os, problem, solution);
   }
   if (d.o >= 3) {
