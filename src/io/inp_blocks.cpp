@@ -305,4 +305,38 @@ void read_subsurface_block(InpStream& in, int s, Subsurface& subsurface,
   }
 }
 
+void apply_shared_digit_rules(InpStream& in, ControlDigits& d, bool first, int previous_v,
+                              bool has_subsurface, const std::string& element, int line1, int line2,
+                              std::string_view kept_grid, std::string_view keep_grid_hint,
+                              std::vector<std::string>& warnings) {
+  if (first) {
+    if (d.p != 2) {
+      warnings.push_back(fmt::format("P={} overridden to 2 in the first case of {}", d.p, element));
+      d.p = 2;
+    }
+    if (d.i != 0) {
+      warnings.push_back(fmt::format("I={} overridden to 0 in the first case of {}", d.i, element));
+      d.i = 0;
+    }
+    if (d.l == 1) {
+      in.fail(line2, fmt::format("L=1 (keep friction) in the first case of {}: no friction law "
+                                 "is stored yet",
+                                 element));
+    }
+    if (d.d == 0 || d.d == 1) {
+      in.fail(line2, fmt::format("D={} (keep {}) in the first case of {}: {}", d.d, kept_grid,
+                                 element, keep_grid_hint));
+    }
+  }
+  if ((d.s == 1 || d.s == 2) && !has_subsurface) {
+    in.fail(line1, fmt::format("S={} uses stored subsurface points, but none were read for {} "
+                               "(use S=3)",
+                               d.s, element));
+  }
+  if (!first && d.l == 1 && d.v != previous_v) {
+    in.fail(line2,
+            fmt::format("L=1 (keep friction) while V changes from {} to {}", previous_v, d.v));
+  }
+}
+
 }  // namespace rollcontact::io

@@ -17,6 +17,17 @@ namespace rollcontact::io {
 /// Resets the G-specific parameters to their defaults first; sets solver.method = g.
 void read_solver_lines(InpStream& in, int g, SolverSettings& solver);
 
+/// Consistency rules of inp-format.md §3.2 that modules 1 and 3 share: in the first case of a
+/// result element P and I are overridden (message to `warnings`) and L=1, D=0/1 are errors
+/// (`kept_grid` names what D keeps, `keep_grid_hint` ends the message); S=1,2 need stored
+/// subsurface points; L=1 may not
+/// keep the friction while V changes (`previous_v` of the last case, ignored in a first case).
+/// `line2`/`line1` are the lines of control words 2 and 1 for the messages.
+void apply_shared_digit_rules(InpStream& in, ControlDigits& d, bool first, int previous_v,
+                              bool has_subsurface, const std::string& element, int line1, int line2,
+                              std::string_view kept_grid, std::string_view keep_grid_hint,
+                              std::vector<std::string>& warnings);
+
 /// True for the friction laws followed by a `MEMDST MEM_S0` line (L=2,3,4,6).
 constexpr bool friction_law_has_memory(int law) {
   return law == 2 || law == 3 || law == 4 || law == 6;

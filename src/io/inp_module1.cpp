@@ -280,35 +280,9 @@ WheelRailProblem Module1Reader::read_case(InpStream& in, int reid, int module_li
   const int l3 = cw.lines[2];
 
   // ---- consistency rules that depend on the digits only (§3.2) ----
-  if (first) {
-    if (d.p != 2) {
-      warn(fmt::format("P={} overridden to 2 in the first case of {}", d.p, element));
-      d.p = 2;
-    }
-    if (d.i != 0) {
-      warn(fmt::format("I={} overridden to 0 in the first case of {}", d.i, element));
-      d.i = 0;
-    }
-    if (d.l == 1) {
-      in.fail(l2, fmt::format("L=1 (keep friction) in the first case of {}: no friction law is "
-                              "stored yet",
-                              element));
-    }
-    if (d.d == 0 || d.d == 1) {
-      in.fail(l2, fmt::format("D={} (keep discretisation) in the first case of {}: no "
-                              "discretisation is stored yet, use D=2..9",
-                              d.d, element));
-    }
-  }
-  if ((d.s == 1 || d.s == 2) && !st.has_subsurface) {
-    in.fail(l1, fmt::format("S={} uses stored subsurface points, but none were read for {} "
-                            "(use S=3)",
-                            d.s, element));
-  }
-  if (!first && d.l == 1 && d.v != previous_digits.v) {
-    in.fail(l2, fmt::format("L=1 (keep friction) while V changes from {} to {}", previous_digits.v,
-                            d.v));
-  }
+  apply_shared_digit_rules(in, d, first, previous_digits.v, st.has_subsurface, element, l1, l2,
+                           "discretisation", "no discretisation is stored yet, use D=2..9",
+                           p.source.warnings);
   if (!first && (previous_digits.t >= 2) != (d.t >= 2) && d.c == 0) {
     in.fail(l2, fmt::format("switching from T={} to T={} (rolling <-> non-rolling) requires C≠0",
                             previous_digits.t, d.t));

@@ -247,35 +247,8 @@ Problem Module3Reader::read_case(InpStream& in, int reid, int cpid, int module_l
   const int l3 = cw.lines[2];
 
   // ---- consistency rules that depend on the digits only (§3.2) ----
-  if (first) {
-    if (d.p != 2) {
-      warn(fmt::format("P={} overridden to 2 in the first case of {}", d.p, element));
-      d.p = 2;
-    }
-    if (d.i != 0) {
-      warn(fmt::format("I={} overridden to 0 in the first case of {}", d.i, element));
-      d.i = 0;
-    }
-    if (d.l == 1) {
-      in.fail(l2, fmt::format("L=1 (keep friction) in the first case of {}: no friction law is "
-                              "stored yet",
-                              element));
-    }
-    if (d.d == 0 || d.d == 1) {
-      in.fail(l2, fmt::format("D={} (keep grid) in the first case of {}: no grid is stored yet, "
-                              "use D=2",
-                              d.d, element));
-    }
-  }
-  if ((d.s == 1 || d.s == 2) && !st.has_subsurface) {
-    in.fail(l1, fmt::format("S={} uses stored subsurface points, but none were read for {} "
-                            "(use S=3)",
-                            d.s, element));
-  }
-  if (!first && d.l == 1 && d.v != st.last.digits.v) {
-    in.fail(l2, fmt::format("L=1 (keep friction) while V changes from {} to {}", st.last.digits.v,
-                            d.v));
-  }
+  apply_shared_digit_rules(in, d, first, st.last.digits.v, st.has_subsurface, element, l1, l2,
+                           "grid", "no grid is stored yet, use D=2", p.source.warnings);
   if (d.d != 0 && d.z == 0) {
     in.fail(l2, fmt::format("D={} requires Z=1 or 2: a new grid needs the undeformed distance "
                             "to be rebuilt",
