@@ -9,6 +9,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "io/grid_extent.hpp"
 #include "io/inp_blocks.hpp"
 #include "io/inp_checks.hpp"
 #include "io/inp_control.hpp"
@@ -23,34 +24,6 @@ constexpr FieldKind kAngle = FieldKind::angle;
 
 constexpr long long kMaxElements = 2000000;  // MX*MY limit
 constexpr double kMinElementSize = 1e-8;     // DX, DY [mm]
-
-/// Lower-left corner and element size of a non-Hertzian grid (known = false for IPOTCN < 0,
-/// whose grid follows from the Hertz solution at solve time).
-struct GridExtent {
-  bool known = false;
-  double xl = 0.0, yl = 0.0, dx = 0.0, dy = 0.0;
-};
-
-GridExtent grid_extent(const PotentialContact& pc) {
-  const auto& v = pc.values;
-  const double mx = pc.mx;
-  const double my = pc.my;
-  switch (pc.ipotcn) {
-    case 1:
-      return {true, v[0], v[1], v[2], v[3]};
-    case 2:
-      return {true, v[0], v[1], (v[2] - v[0]) / mx, (v[3] - v[1]) / my};
-    case 3:
-      return {true, v[0] - 0.5 * v[2], v[1] - 0.5 * v[3], v[2], v[3]};
-    case 4: {
-      const double dx = pc.mx > 1 ? (v[2] - v[0]) / (mx - 1.0) : 0.0;
-      const double dy = pc.my > 1 ? (v[3] - v[1]) / (my - 1.0) : 0.0;
-      return {true, v[0] - 0.5 * dx, v[1] - 0.5 * dy, dx, dy};
-    }
-    default:
-      return {};
-  }
-}
 
 std::size_t element_count(const PotentialContact& pc) {
   return static_cast<std::size_t>(pc.mx) * static_cast<std::size_t>(pc.my);

@@ -18,6 +18,7 @@
 #include <system_error>
 #include <utility>
 
+#include "io/grid_extent.hpp"
 #include "io/toml_case_schema.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -271,33 +272,6 @@ class Table {
   const std::string* file_;
   std::set<std::string, std::less<>> known_;
 };
-
-/// Lower-left corner and element size of a non-Hertzian grid (as in the .inp reader).
-struct GridExtent {
-  bool known = false;
-  double xl = 0.0, yl = 0.0, dx = 0.0, dy = 0.0;
-};
-
-GridExtent grid_extent(const PotentialContact& pc) {
-  const auto& v = pc.values;
-  const double mx = pc.mx;
-  const double my = pc.my;
-  switch (pc.ipotcn) {
-    case 1:
-      return {true, v[0], v[1], v[2], v[3]};
-    case 2:
-      return {true, v[0], v[1], (v[2] - v[0]) / mx, (v[3] - v[1]) / my};
-    case 3:
-      return {true, v[0] - 0.5 * v[2], v[1] - 0.5 * v[3], v[2], v[3]};
-    case 4: {
-      const double dx = pc.mx > 1 ? (v[2] - v[0]) / (mx - 1.0) : 0.0;
-      const double dy = pc.my > 1 ? (v[3] - v[1]) / (my - 1.0) : 0.0;
-      return {true, v[0] - 0.5 * dx, v[1] - 0.5 * dy, dx, dy};
-    }
-    default:
-      return {};
-  }
-}
 
 bool differs(double a, double b, double rel) {
   return std::abs(a - b) > rel * std::max(std::abs(a), std::abs(b));
