@@ -21,7 +21,7 @@ constexpr int kMaxSubsurfaceCount = 9999;
 
 }  // namespace
 
-void read_solver_lines(InpStream& in, int g, SolverSettings& solver) {
+std::optional<int> read_solver_lines(InpStream& in, int g, SolverSettings& solver) {
   const GroupValues it = in.read_group({{"MAXGS", kInt},
                                         {"MAXIN", kInt},
                                         {"MAXNR", kInt},
@@ -80,6 +80,7 @@ void read_solver_lines(InpStream& in, int g, SolverSettings& solver) {
     solver.gd.d_slp = gl.real(6);
     solver.gd.pow_s = gl.real(7);
   }
+  return it.has(5) ? std::optional<int>(it.integer(5)) : std::nullopt;
 }
 
 FrictionValues read_friction_values(InpStream& in, int law, std::string_view what) {
@@ -88,15 +89,7 @@ FrictionValues read_friction_values(InpStream& in, int law, std::string_view wha
     const GroupValues g = in.read_group({{"FSTAT", kReal}, {"FKIN", kReal}}, what);
     fv.fstat = g.real(0);
     fv.fkin = g.real(1);
-    if (std::abs(fv.fstat - fv.fkin) > 1e-3 * std::abs(fv.fkin)) {
-      in.fail(g.line(0), fmt::format("Coulomb friction (L=0) needs FSTAT = FKIN, but FSTAT = {} "
-                                     "and FKIN = {} differ by more than 0.1 %",
-                                     fv.fstat, fv.fkin));
-    }
-    if (fv.fkin < 1e-4 * (1.0 - 1e-12)) {
-      in.fail(g.line(1), fmt::format("FKIN = {} must be at least 0.0001", fv.fkin));
-    }
-    fv.fstat = fv.fkin;
+    check_coulomb_values(in, fv, g.line(0), g.line(1));
     return fv;
   }
   if (law == 6) {
@@ -118,6 +111,18 @@ FrictionValues read_friction_values(InpStream& in, int law, std::string_view wha
   fv.fstat = fv.fkin + fv.params[0] + fv.params[2];
   require_at_least(in, g.line(0), "FKIN", fv.fkin, 0.0);
   return fv;
+}
+
+void check_coulomb_values(InpStream& in, FrictionValues& fv, int line_fstat, int line_fkin) {
+  if (std::abs(fv.fstat - fv.fkin) > 1e-3 * std::abs(fv.fkin)) {
+    in.fail(line_fstat, fmt::format("Coulomb friction (L=0) needs FSTAT = FKIN, but FSTAT = {} "
+                                    "and FKIN = {} differ by more than 0.1 %",
+                                    fv.fstat, fv.fkin));
+  }
+  if (fv.fkin < 1e-4 * (1.0 - 1e-12)) {
+    in.fail(line_fkin, fmt::format("FKIN = {} must be at least 0.0001", fv.fkin));
+  }
+  fv.fstat = fv.fkin;
 }
 
 void read_friction_memory(InpStream& in, Friction& friction) {

@@ -4,6 +4,7 @@
 // (spec/inp-format.md §4, §4.1, §6). Each function reads its lines, validates ranges and
 // stores the values; "keep" semantics are the caller's business.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,8 +15,13 @@
 namespace rollcontact::io {
 
 /// Iteration line `MAXGS MAXIN MAXNR MAXOUT EPS {NPOT_MAX}` and the G-specific line (G=2,3,4,5).
-/// Resets the G-specific parameters to their defaults first; sets solver.method = g.
-void read_solver_lines(InpStream& in, int g, SolverSettings& solver);
+/// Resets the G-specific parameters to their defaults first; sets solver.method = g. Returns
+/// NPOT_MAX when given (module 1 uses it, module 3 ignores it).
+std::optional<int> read_solver_lines(InpStream& in, int g, SolverSettings& solver);
+
+/// Coulomb friction (L=0) needs FSTAT = FKIN within 0.1 % and FKIN ≥ 1e-4; sets FSTAT := FKIN.
+/// `line_fstat`/`line_fkin` are the lines of the two values for the messages.
+void check_coulomb_values(InpStream& in, FrictionValues& fv, int line_fstat, int line_fkin);
 
 /// Consistency rules of inp-format.md §3.2 that modules 1 and 3 share: in the first case of a
 /// result element P and I are overridden (message to `warnings`) and L=1, D=0/1 are errors

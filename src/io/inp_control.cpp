@@ -11,6 +11,20 @@
 
 namespace rollcontact::io {
 
+DebugDigits decode_debug_word(const GroupValues& w4) {
+  const int v4 = w4.integer(0);
+  DebugDigits g;
+  g.p = digit_of(v4, 6);
+  g.s = digit_of(v4, 5);
+  g.f = digit_of(v4, 4);
+  g.l = digit_of(v4, 3);
+  g.c = digit_of(v4, 2);
+  g.i = digit_of(v4, 1);
+  g.n = digit_of(v4, 0);
+  if (w4.has(1)) g.readln = w4.integer(1);
+  return g;
+}
+
 namespace {
 
 /// Reads one control word (with an optional second integer) and checks its digit count.
@@ -141,16 +155,8 @@ ControlWords read_control_words_module3(InpStream& in) {
   d.debug = DebugDigits{};
   if (d.x == 1) {
     const GroupValues w4 = read_word(in, "control word 4 (PSFLCIN)", 7, true, "READLN");
-    const int v4 = w4.integer(0);
     out.lines[3] = w4.line(0);
-    d.debug.p = digit_of(v4, 6);
-    d.debug.s = digit_of(v4, 5);
-    d.debug.f = digit_of(v4, 4);
-    d.debug.l = digit_of(v4, 3);
-    d.debug.c = digit_of(v4, 2);
-    d.debug.i = digit_of(v4, 1);
-    d.debug.n = digit_of(v4, 0);
-    if (w4.has(1)) d.debug.readln = w4.integer(1);
+    d.debug = decode_debug_word(w4);
   }
   return out;
 }

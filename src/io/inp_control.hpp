@@ -20,6 +20,10 @@ struct ControlWords {
 /// values outside their admissible sets.
 ControlWords read_control_words_module3(InpStream& in);
 
+/// Debug print levels of control word 4 (`PSFLCIN {READLN}`), shared by both modules; they have
+/// no effect on results.
+DebugDigits decode_debug_word(const GroupValues& w4);
+
 /// Decimal digit k (0 = rightmost) of a non-negative control word.
 constexpr int digit_of(int word, int k) {
   for (int j = 0; j < k; ++j) word /= 10;

@@ -147,16 +147,8 @@ Module1Words read_control_words_module1(InpStream& in) {
   d.debug = DebugDigits{};
   if (d.x == 1) {
     const GroupValues w4 = read_word(in, "control word 4 (PSFLCIN)", 7, "READLN");
-    const int v4 = w4.integer(0);
     out.lines[3] = w4.line(0);
-    d.debug.p = digit_of(v4, 6);
-    d.debug.s = digit_of(v4, 5);
-    d.debug.f = digit_of(v4, 4);
-    d.debug.l = digit_of(v4, 3);
-    d.debug.c = digit_of(v4, 2);
-    d.debug.i = digit_of(v4, 1);
-    d.debug.n = digit_of(v4, 0);
-    if (w4.has(1)) d.debug.readln = w4.integer(1);
+    d.debug = decode_debug_word(w4);
   }
   return out;
 }
@@ -203,15 +195,7 @@ std::pair<double, FrictionValues> read_prefixed_friction(InpStream& in, int v, i
   if (law == 0) {
     fv.fstat = g.real(1);
     fv.fkin = g.real(2);
-    if (std::abs(fv.fstat - fv.fkin) > 1e-3 * std::abs(fv.fkin)) {
-      in.fail(g.line(1), fmt::format("Coulomb friction (L=0) needs FSTAT = FKIN, but FSTAT = {} "
-                                     "and FKIN = {} differ by more than 0.1 %",
-                                     fv.fstat, fv.fkin));
-    }
-    if (fv.fkin < 1e-4 * (1.0 - 1e-12)) {
-      in.fail(g.line(2), fmt::format("FKIN = {} must be at least 0.0001", fv.fkin));
-    }
-    fv.fstat = fv.fkin;
+    check_coulomb_values(in, fv, g.line(1), g.line(2));
   } else if (law == 6) {
     fv.fkin = g.real(1);
     fv.fstat = fv.fkin;
@@ -225,23 +209,11 @@ std::pair<double, FrictionValues> read_prefixed_friction(InpStream& in, int v, i
   return {g.real(0), fv};
 }
 
-/// NPOT_MAX, the optional sixth value of the iteration line. read_solver_lines() (shared with
-/// module 3, which ignores the value) does not return it, so the line is read a second time from
-/// a copy of the stream positioned before it.
-int peek_npot_max(const InpStream& in, std::vector<std::string>& warnings) {
-  InpStream copy = in;
-  const GroupValues it = copy.read_group({{"MAXGS", kInt},
-                                          {"MAXIN", kInt},
-                                          {"MAXNR", kInt},
-                                          {"MAXOUT", kInt},
-                                          {"EPS", kReal},
-                                          {"NPOT_MAX", kInt, true}},
-                                         "the iteration line (MAXGS MAXIN MAXNR MAXOUT EPS)");
-  if (!it.has(5)) return kDefaultNpotMax;
-  const int npot = std::clamp(it.integer(5), 100, 1000000);
-  if (npot != it.integer(5)) {
-    warnings.push_back(fmt::format("NPOT_MAX = {} clamped to {}", it.integer(5), npot));
-  }
+/// NPOT_MAX of the iteration line, clamped to 100..1e6 (default when absent).
+int clamp_npot_max(std::optional<int> given, std::vector<std::string>& warnings) {
+  if (!given) return kDefaultNpotMax;
+  const int npot = std::clamp(*given, 100, 1000000);
+  if (npot != *given) warnings.push_back(fmt::format("NPOT_MAX = {} clamped to {}", *given, npot));
   return npot;
 }
 
@@ -321,8 +293,7 @@ WheelRailProblem Module1Reader::read_case(InpStream& in, int reid, int module_li
 
   // ---- lines 5-6: iteration parameters (G=1 keeps them) ----
   if (d.g != 1) {
-    p.npot_max = peek_npot_max(in, p.source.warnings);
-    read_solver_lines(in, d.g, p.solver);
+    p.npot_max = clamp_npot_max(read_solver_lines(in, d.g, p.solver), p.source.warnings);
   }
 
   // ---- lines 7-8: friction (L=1 keeps it) ----

@@ -13,6 +13,7 @@
 #include "io/inp_blocks.hpp"
 #include "io/inp_checks.hpp"
 #include "io/inp_control.hpp"
+#include "io/reader_checks.hpp"
 
 namespace rollcontact::io {
 
@@ -27,24 +28,6 @@ constexpr double kMinElementSize = 1e-8;     // DX, DY [mm]
 
 std::size_t element_count(const PotentialContact& pc) {
   return static_cast<std::size_t>(pc.mx) * static_cast<std::size_t>(pc.my);
-}
-
-/// True when a/b differ by more than `rel` relative to their size.
-bool differs(double a, double b, double rel) {
-  return std::abs(a - b) > rel * std::max(std::abs(a), std::abs(b));
-}
-
-/// True when x is an integer multiple of h (within 1e-6 of one element).
-bool is_multiple(double x, double h) {
-  const double k = x / h;
-  return std::abs(k - std::round(k)) <= 1e-6 * std::max(1.0, std::abs(k));
-}
-
-/// Kalker's material difference parameter K (0 for quasi-identical bodies).
-double material_k(const Materials& m) {
-  const double a = (1.0 - 2.0 * m.poiss1) / m.gg1 - (1.0 - 2.0 * m.poiss2) / m.gg2;
-  const double b = (1.0 - m.poiss1) / m.gg1 + (1.0 - m.poiss2) / m.gg2;
-  return 0.25 * a / b;
 }
 
 /// Lines of the IPOTCN value and of the grid values after it.

@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "io/grid_extent.hpp"
+#include "io/reader_checks.hpp"
 #include "io/toml_case_schema.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -272,21 +273,6 @@ class Table {
   const std::string* file_;
   std::set<std::string, std::less<>> known_;
 };
-
-bool differs(double a, double b, double rel) {
-  return std::abs(a - b) > rel * std::max(std::abs(a), std::abs(b));
-}
-
-bool is_multiple(double x, double h) {
-  const double k = x / h;
-  return std::abs(k - std::round(k)) <= 1e-6 * std::max(1.0, std::abs(k));
-}
-
-double material_k(const Materials& m) {
-  const double a = (1.0 - 2.0 * m.poiss1) / m.gg1 - (1.0 - 2.0 * m.poiss2) / m.gg2;
-  const double b = (1.0 - m.poiss1) / m.gg1 + (1.0 - m.poiss2) / m.gg2;
-  return 0.25 * a / b;
-}
 
 std::size_t element_count(const PotentialContact& pc) {
   return static_cast<std::size_t>(pc.mx) * static_cast<std::size_t>(pc.my);
