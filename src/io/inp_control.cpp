@@ -11,6 +11,17 @@
 
 namespace rollcontact::io {
 
+void decode_word3(int v3, ControlDigits& d) {
+  d.x = digit_of(v3, 7);
+  d.h = digit_of(v3, 6);
+  d.g = digit_of(v3, 5);
+  d.i = digit_of(v3, 4);
+  d.a = digit_of(v3, 3);
+  d.o = digit_of(v3, 2);
+  d.w = digit_of(v3, 1);
+  d.r = digit_of(v3, 0);
+}
+
 DebugDigits decode_debug_word(const GroupValues& w4) {
   const int v4 = w4.integer(0);
   DebugDigits g;
@@ -135,14 +146,7 @@ ControlWords read_control_words_module3(InpStream& in) {
   const GroupValues w3 = read_word(in, "control word 3 (XHGIAOWR)", 8, false, {});
   const int v3 = w3.integer(0);
   out.lines[2] = w3.line(0);
-  d.x = digit_of(v3, 7);
-  d.h = digit_of(v3, 6);
-  d.g = digit_of(v3, 5);
-  d.i = digit_of(v3, 4);
-  d.a = digit_of(v3, 3);
-  d.o = digit_of(v3, 2);
-  d.w = digit_of(v3, 1);
-  d.r = digit_of(v3, 0);
+  decode_word3(v3, d);
   check_digit(in, out.lines[2], "X", d.x, range(0, 1));
   check_digit(in, out.lines[2], "H", d.h, {0, 1, 3});
   check_digit(in, out.lines[2], "G", d.g, range(0, 5));

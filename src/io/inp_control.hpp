@@ -20,6 +20,9 @@ struct ControlWords {
 /// values outside their admissible sets.
 ControlWords read_control_words_module3(InpStream& in);
 
+/// Digits X H G I A O W R of control word 3 (same layout in both modules); unchecked.
+void decode_word3(int v3, ControlDigits& d);
+
 /// Debug print levels of control word 4 (`PSFLCIN {READLN}`), shared by both modules; they have
 /// no effect on results.
 DebugDigits decode_debug_word(const GroupValues& w4);

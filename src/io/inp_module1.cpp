@@ -130,14 +130,7 @@ Module1Words read_control_words_module1(InpStream& in) {
   const GroupValues w3 = read_word(in, "control word 3 (XHGIAOWR)", 8);
   const int v3 = w3.integer(0);
   const int l3 = out.lines[2] = w3.line(0);
-  d.x = digit_of(v3, 7);
-  d.h = digit_of(v3, 6);
-  d.g = digit_of(v3, 5);
-  d.i = digit_of(v3, 4);
-  d.a = digit_of(v3, 3);
-  d.o = digit_of(v3, 2);
-  d.w = digit_of(v3, 1);
-  d.r = digit_of(v3, 0);
+  decode_word3(v3, d);
   check_digit(in, l3, "X", d.x, {0, 1}, "0, 1");
   check_digit(in, l3, "H", d.h, {0, 1, 3}, "0, 1, 3");
   check_digit(in, l3, "G", d.g, {0, 1, 2, 3, 4, 5}, "0..5");
