@@ -353,10 +353,16 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
     if (problem_.solver.omega_h > 0.0) settings.omega_h = problem_.solver.omega_h;
     if (problem_.solver.omega_s > 0.0) settings.omega_s = problem_.solver.omega_s;
   }
-  // CONTACT's TangCG (T=1,2) and SteadyGS (T=3) roles are both taken by the preconditioned
-  // Jacobi iteration (docs/decisions.md); ConvexGS stays the Gauss–Seidel iteration.
+  // CONTACT's TangCG (T=1,2) and SteadyGS (T=3) roles are both taken by the semismooth Newton
+  // iteration (docs/decisions.md); ConvexGS stays the Gauss–Seidel iteration. Should Newton
+  // fail, the preconditioned Jacobi iteration (and after it ConvexGS) starts from its result.
   if (kind == TangentialSolverKind::ConvexGS) return solve_convex_gs(sys, settings, px0, py0);
-  return solve_preconditioned_jacobi(sys, settings, px0, py0);
+  TangentialResult newton = solve_semismooth_newton(sys, settings, px0, py0);
+  if (newton.converged) return newton;
+  notes_.push_back(newton.message + "; continuing with the preconditioned Jacobi iteration");
+  TangentialResult jacobi = solve_preconditioned_jacobi(sys, settings, &newton.px, &newton.py);
+  jacobi.iterations += newton.iterations;
+  return jacobi;
 }
 
 void CaseSolver::run() {

@@ -86,6 +86,14 @@ TangentialResult solve_preconditioned_jacobi(const TangentialSystem& sys,
                                              const std::vector<double>* px0 = nullptr,
                                              const std::vector<double>* py0 = nullptr);
 
+/// Semismooth Newton iteration on F(p) = p − P_g(p − r·S) with Krylov inner solves (PCG for
+/// symmetric A, GMRES for steady rolling) and a line search on ‖F‖; see semismooth_newton.cpp.
+/// `iterations` counts the products with A. Needs sys.a.preconditioner.
+TangentialResult solve_semismooth_newton(const TangentialSystem& sys,
+                                         const TangentialSettings& settings,
+                                         const std::vector<double>* px0 = nullptr,
+                                         const std::vector<double>* py0 = nullptr);
+
 /// Gauss–Seidel over all contact elements with the exact local element solution (physics.md
 /// §9.3 "ConvexGS"), accelerated by Anderson mixing. Up to 4000 contact elements the slip of
 /// all others is updated after each element (exact, O(N²) per sweep); above, only within two

@@ -1,0 +1,135 @@
+#include "tangential/krylov.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace rollcontact::tangential {
+
+namespace {
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) s += a[k] * b[k];
+  return s;
+}
+
+}  // namespace
+
+KrylovResult solve_pcg(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
+                       std::vector<double>& x, double rtol, int max_it) {
+  const std::size_t n = b.size();
+  KrylovResult res;
+  x.assign(n, 0.0);
+  std::vector<double> r = b, z(n), d(n), q(n);
+  m(r, z);
+  double rz = dot(r, z);
+  const double rz0 = rz;
+  if (!(rz0 > 0.0)) {
+    res.converged = true;
+    return res;
+  }
+  d = z;
+  while (res.iterations < max_it) {
+    a(d, q);
+    ++res.iterations;
+    const double dq = dot(d, q);
+    if (!(dq > 0.0)) break;  // lost positive definiteness (rounding): keep what we have
+    const double alpha = rz / dq;
+    for (std::size_t k = 0; k < n; ++k) {
+      x[k] += alpha * d[k];
+      r[k] -= alpha * q[k];
+    }
+    m(r, z);
+    const double rz_new = dot(r, z);
+    res.relative_residual = std::sqrt(std::max(rz_new, 0.0) / rz0);
+    if (res.relative_residual <= rtol) {
+      res.converged = true;
+      break;
+    }
+    const double beta = rz_new / rz;
+    rz = rz_new;
+    for (std::size_t k = 0; k < n; ++k) d[k] = z[k] + beta * d[k];
+  }
+  return res;
+}
+
+KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
+                         std::vector<double>& x, double rtol, int max_it, int restart) {
+  const std::size_t n = b.size();
+  KrylovResult res;
+  x.assign(n, 0.0);
+  const double bnorm = std::sqrt(dot(b, b));
+  if (!(bnorm > 0.0)) {
+    res.converged = true;
+    return res;
+  }
+  const std::size_t mr = static_cast<std::size_t>(restart);
+  std::vector<std::vector<double>> v(mr + 1, std::vector<double>(n));
+  std::vector<std::vector<double>> h(mr + 1, std::vector<double>(mr, 0.0));
+  std::vector<double> cs(mr), sn(mr), g(mr + 1), w(n), z(n), y(mr);
+  std::vector<double> r = b;  // residual of the current x
+  while (true) {
+    double beta = std::sqrt(dot(r, r));
+    res.relative_residual = beta / bnorm;
+    if (res.relative_residual <= rtol) {
+      res.converged = true;
+      return res;
+    }
+    if (res.iterations >= max_it) return res;
+    for (std::size_t k = 0; k < n; ++k) v[0][k] = r[k] / beta;
+    std::fill(g.begin(), g.end(), 0.0);
+    g[0] = beta;
+    std::size_t j = 0;
+    for (; j < mr && res.iterations < max_it; ++j) {
+      m(v[j], z);
+      a(z, w);
+      ++res.iterations;
+      for (std::size_t i = 0; i <= j; ++i) {  // modified Gram–Schmidt
+        h[i][j] = dot(w, v[i]);
+        for (std::size_t k = 0; k < n; ++k) w[k] -= h[i][j] * v[i][k];
+      }
+      h[j + 1][j] = std::sqrt(dot(w, w));
+      if (h[j + 1][j] > 0.0)
+        for (std::size_t k = 0; k < n; ++k) v[j + 1][k] = w[k] / h[j + 1][j];
+      for (std::size_t i = 0; i < j; ++i) {  // previous Givens rotations
+        const double t = cs[i] * h[i][j] + sn[i] * h[i + 1][j];
+        h[i + 1][j] = -sn[i] * h[i][j] + cs[i] * h[i + 1][j];
+        h[i][j] = t;
+      }
+      const double den = std::hypot(h[j][j], h[j + 1][j]);
+      cs[j] = den > 0.0 ? h[j][j] / den : 1.0;
+      sn[j] = den > 0.0 ? h[j + 1][j] / den : 0.0;
+      h[j][j] = den;
+      h[j + 1][j] = 0.0;
+      g[j + 1] = -sn[j] * g[j];
+      g[j] = cs[j] * g[j];
+      res.relative_residual = std::abs(g[j + 1]) / bnorm;
+      if (res.relative_residual <= rtol || !(den > 0.0)) {
+        ++j;
+        break;
+      }
+    }
+    // x += M⁻¹ V y with H y = g (upper triangular, j columns).
+    for (std::size_t i = j; i-- > 0;) {
+      double s = g[i];
+      for (std::size_t l = i + 1; l < j; ++l) s -= h[i][l] * y[l];
+      y[i] = h[i][i] != 0.0 ? s / h[i][i] : 0.0;
+    }
+    std::fill(w.begin(), w.end(), 0.0);
+    for (std::size_t i = 0; i < j; ++i)
+      for (std::size_t k = 0; k < n; ++k) w[k] += y[i] * v[i][k];
+    m(w, z);
+    for (std::size_t k = 0; k < n; ++k) x[k] += z[k];
+    if (res.relative_residual <= rtol) {
+      res.converged = true;
+      return res;
+    }
+    if (res.iterations >= max_it) return res;
+    // Restart: the true residual (one more product).
+    a(x, w);
+    for (std::size_t k = 0; k < n; ++k) r[k] = b[k] - w[k];
+  }
+}
+
+}  // namespace rollcontact::tangential

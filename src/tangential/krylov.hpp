@@ -1,0 +1,28 @@
+#pragma once
+// Preconditioned Krylov solvers for the linear systems of the semismooth Newton iteration:
+// conjugate gradients for symmetric positive definite operators (shift, transient rolling) and
+// restarted GMRES with right preconditioning for the non-symmetric steady-rolling operator.
+// Vectors are plain std::vector<double>; operators are callables y = Op(x).
+
+#include <functional>
+#include <vector>
+
+namespace rollcontact::tangential {
+
+using LinearMap = std::function<void(const std::vector<double>& x, std::vector<double>& y)>;
+
+struct KrylovResult {
+  int iterations = 0;              ///< operator applications
+  double relative_residual = 0.0;  ///< ‖b − A x‖ / ‖b‖ (preconditioned norm for CG)
+  bool converged = false;
+};
+
+/// Solves A x = b from x = 0 until ‖r‖ ≤ rtol·‖b‖ (in the M-norm: √(rᵀ M r)), at most max_it.
+KrylovResult solve_pcg(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
+                       std::vector<double>& x, double rtol, int max_it);
+
+/// Right-preconditioned GMRES(restart) from x = 0 until ‖b − A x‖ ≤ rtol·‖b‖, at most max_it.
+KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
+                         std::vector<double>& x, double rtol, int max_it, int restart = 40);
+
+}  // namespace rollcontact::tangential

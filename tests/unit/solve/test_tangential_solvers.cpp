@@ -1,0 +1,87 @@
+// The default tangential solver (semismooth Newton) against the exact Gauss–Seidel iteration
+// (G=2, ConvexGS, dense below 4000 elements) on Hertzian cases with spin, so that the slip
+// directions vary over the contact; and Coulomb's law checked element by element.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "hertz_problem.hpp"
+#include "rollcontact/solve.hpp"
+
+namespace rollcontact {
+namespace {
+
+Problem spinning_case(int t) {
+  Problem p = test::hertz_problem(0.6, 1.0, 10.0, 82000.0, 0.28, 31, 41, 1.1);
+  p.digits.t = t;
+  p.solver.eps = 1e-7;
+  p.kinematics.veloc = 10000.0;
+  p.kinematics.chi = 0.0;
+  p.kinematics.dq = 0.6 * 2.2 / 31;
+  if (t == 1) {
+    p.kinematics.cksi = 1.0e-5;  // shift [mm] and rotation [rad]: μp₀a/G ≈ 2e-5 mm
+    p.kinematics.cphi = 1.0e-5;
+  } else {
+    p.kinematics.cksi = 2.0e-5;  // creepages and spin [rad/mm]: μp₀/G ≈ 3e-5
+    p.kinematics.ceta = -1.0e-5;
+    p.kinematics.cphi = 2.0e-5;
+  }
+  return p;
+}
+
+/// |p_t| ≤ μ p_n everywhere; slip elements on the bound with the slip opposite to the traction.
+void expect_coulomb(const Solution& s, double mu) {
+  int slipping = 0;
+  for (std::size_t i = 0; i < s.pn.size(); ++i) {
+    const double g = mu * s.pn[i], pt = std::hypot(s.px[i], s.py[i]);
+    EXPECT_LE(pt, g * (1.0 + 1e-9) + 1e-12) << "element " << i;
+    if (s.state[i] != ElementState::Slip || g <= 0.0) continue;
+    ++slipping;
+    EXPECT_NEAR(pt, g, 1e-9 * g) << "element " << i;
+    const double sabs = std::hypot(s.sx[i], s.sy[i]);
+    if (sabs > 0.0) {
+      EXPECT_LT((s.px[i] * s.sx[i] + s.py[i] * s.sy[i]) / (pt * sabs), -0.999) << "element " << i;
+    }
+  }
+  EXPECT_GT(slipping, 0);
+}
+
+class DefaultSolverMatchesGaussSeidel : public ::testing::TestWithParam<int> {};
+
+TEST_P(DefaultSolverMatchesGaussSeidel, Tractions) {
+  const Problem p = spinning_case(GetParam());
+  Problem gs = p;
+  gs.digits.g = 2;
+  State s1, s2;
+  const Solution newton = solve(p, s1);
+  const Solution reference = solve(gs, s2);
+  ASSERT_TRUE(newton.solver.converged) << newton.solver.message;
+  ASSERT_TRUE(reference.solver.converged) << reference.solver.message;
+  for (const std::string& w : newton.warnings)  // Newton itself converged, without fall-back
+    EXPECT_EQ(w.find("continuing with"), std::string::npos) << w;
+  // Partial slip (about 45 % and 60 % of the 837 elements), the case that needs the solver.
+  EXPECT_GT(newton.statistics.nslip, newton.statistics.ncon / 4);
+  EXPECT_LT(newton.statistics.nslip, newton.statistics.ncon * 3 / 4);
+  expect_coulomb(newton, 0.3);
+  double pmax = 0.0, diff = 0.0;
+  for (std::size_t i = 0; i < newton.px.size(); ++i) {
+    pmax = std::max(pmax, std::hypot(reference.px[i], reference.py[i]));
+    diff =
+        std::max(diff, std::hypot(newton.px[i] - reference.px[i], newton.py[i] - reference.py[i]));
+  }
+  // Both stop at a relative change of 1e-7; 1e-4 of the peak traction leaves room for the
+  // different stopping measures, and is far below any physical difference.
+  EXPECT_LT(diff, 1e-4 * pmax);
+  EXPECT_NEAR(newton.totals.fx, reference.totals.fx, 1e-5 * std::abs(reference.totals.fn));
+  EXPECT_NEAR(newton.totals.fy, reference.totals.fy, 1e-5 * std::abs(reference.totals.fn));
+  EXPECT_EQ(newton.statistics.nslip, reference.statistics.nslip);
+}
+
+INSTANTIATE_TEST_SUITE_P(ShiftAndSteadyRolling, DefaultSolverMatchesGaussSeidel,
+                         ::testing::Values(1, 3));
+
+}  // namespace
+}  // namespace rollcontact

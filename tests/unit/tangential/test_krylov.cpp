@@ -1,0 +1,92 @@
+// The Krylov solvers of the semismooth Newton iteration on small systems with known solutions.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tangential/krylov.hpp"
+
+namespace rollcontact::tangential {
+namespace {
+
+// 1-D operator −u'' + c·u' (central differences), n unknowns, Dirichlet ends: symmetric positive
+// definite for c = 0, non-symmetric otherwise.
+LinearMap convection_diffusion(double c) {
+  return [c](const std::vector<double>& x, std::vector<double>& y) {
+    const std::size_t n = x.size();
+    y.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double left = i > 0 ? x[i - 1] : 0.0, right = i + 1 < n ? x[i + 1] : 0.0;
+      y[i] = 2.0 * x[i] - left - right + 0.5 * c * (right - left);
+    }
+  };
+}
+
+const LinearMap jacobi = [](const std::vector<double>& r, std::vector<double>& z) {
+  z.resize(r.size());
+  for (std::size_t i = 0; i < r.size(); ++i) z[i] = 0.5 * r[i];
+};
+
+double relative_residual(const LinearMap& a, const std::vector<double>& b,
+                         const std::vector<double>& x) {
+  std::vector<double> ax;
+  a(x, ax);
+  double r = 0.0, nb = 0.0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    r += (b[i] - ax[i]) * (b[i] - ax[i]);
+    nb += b[i] * b[i];
+  }
+  return std::sqrt(r / nb);
+}
+
+std::vector<double> rhs(std::size_t n) {
+  std::vector<double> b(n);
+  for (std::size_t i = 0; i < n; ++i) b[i] = std::sin(0.37 * static_cast<double>(i)) + 0.1;
+  return b;
+}
+
+TEST(Krylov, ConjugateGradientsSolveAnSpdSystemInAtMostNSteps) {
+  const LinearMap a = convection_diffusion(0.0);
+  const std::vector<double> b = rhs(50);
+  std::vector<double> x;
+  const KrylovResult r = solve_pcg(a, jacobi, b, x, 1e-10, 200);
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(r.iterations, 50);  // exact arithmetic: at most n steps
+  EXPECT_LT(relative_residual(a, b, x), 1e-8);
+}
+
+TEST(Krylov, ConjugateGradientsStopAtTheRequestedTolerance) {
+  const LinearMap a = convection_diffusion(0.0);
+  const std::vector<double> b = rhs(400);
+  std::vector<double> x;
+  const KrylovResult loose = solve_pcg(a, jacobi, b, x, 1e-1, 1000);
+  const KrylovResult tight = solve_pcg(a, jacobi, b, x, 1e-8, 1000);
+  EXPECT_TRUE(loose.converged);
+  EXPECT_TRUE(tight.converged);
+  EXPECT_LT(loose.iterations, tight.iterations);
+  const KrylovResult capped = solve_pcg(a, jacobi, b, x, 1e-12, 5);
+  EXPECT_FALSE(capped.converged);
+  EXPECT_EQ(capped.iterations, 5);
+}
+
+TEST(Krylov, GmresSolvesANonSymmetricSystemWithAndWithoutRestarts) {
+  const LinearMap a = convection_diffusion(0.8);
+  const std::vector<double> b = rhs(60);
+  for (int restart : {80, 15}) {
+    std::vector<double> x;
+    const KrylovResult r = solve_gmres(a, jacobi, b, x, 1e-10, 2000, restart);
+    EXPECT_TRUE(r.converged) << "restart " << restart;
+    EXPECT_LT(relative_residual(a, b, x), 1e-9) << "restart " << restart;
+  }
+}
+
+TEST(Krylov, ZeroRightHandSideGivesZero) {
+  std::vector<double> x{1.0, 2.0};
+  EXPECT_TRUE(solve_pcg(convection_diffusion(0.0), jacobi, {0.0, 0.0}, x, 1e-8, 10).converged);
+  EXPECT_EQ(x, (std::vector<double>{0.0, 0.0}));
+  EXPECT_TRUE(solve_gmres(convection_diffusion(1.0), jacobi, {0.0, 0.0}, x, 1e-8, 10).converged);
+  EXPECT_EQ(x, (std::vector<double>{0.0, 0.0}));
+}
+
+}  // namespace
+}  // namespace rollcontact::tangential
