@@ -43,6 +43,7 @@ Problem tangential_case(const Size& size, int t) {
 void report(benchmark::State& bstate, const Solution& sol, const Size& size) {
   bstate.counters["tang_iterations"] = sol.solver.tangential_iterations;
   bstate.counters["newton_iterations"] = sol.solver.newton_iterations;
+  bstate.counters["coarse_its"] = sol.solver.tangential_coarse_iterations;
   bstate.counters["ncon"] = sol.statistics.ncon;
   bstate.counters["nslip"] = sol.statistics.nslip;
   bstate.counters["converged"] = sol.solver.converged ? 1 : 0;

@@ -77,7 +77,12 @@ struct SolverReport {
   int normal_products = 0;           ///< influence-matrix products (FFT convolutions) used
   double normal_iteration_seconds = 0.0;  ///< wall time of the fine-grid CG iterations [s]
   double normal_residual = 0.0;           ///< final relative change ||Δp||/||p||
+  /// Tangential iterations: products with the tangential operator (semismooth Newton) or
+  /// sweeps (Gauss–Seidel), summed over the creepage Newton loop.
   int tangential_iterations = 0;
+  /// The same on coarser grids (nested-iteration start of steady rolling), each a quarter or
+  /// less of a fine one.
+  int tangential_coarse_iterations = 0;
   int newton_iterations = 0;
 };
 

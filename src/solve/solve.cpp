@@ -128,6 +128,88 @@ Field coarse_grid_start(State::Impl& st, int level, const Grid& grid, const Fiel
   return fine;
 }
 
+/// Nested iteration for steady rolling on large grids, the tangential counterpart of
+/// coarse_grid_start: the semismooth Newton iteration moves the adhesion front about one element
+/// per step along the rows (docs/decisions.md), so a start whose division into adhesion and slip
+/// is right to within an element or two saves most fine steps. The coarse problem has elements
+/// twice as large: traction bound averaged over the 2×2 fine elements (force-conserving), slip
+/// per step averaged over the fine contact elements and doubled with the rolling step, and the
+/// operator (C − C′) with C′ one coarse step downstream. Its solution (itself started from a
+/// coarser grid) is prolongated element-wise: slipping parents give slip at the fine bound in
+/// the parent's direction, adhering parents their traction within the fine bound. Returns false
+/// (start unchanged) when the grid is too small to gain or the coarse solve fails.
+bool steady_coarse_start(State::Impl& st, int level, const tangential::TangentialSystem& sys,
+                         double shift_x, double shift_y, const CombinedMaterial& material,
+                         const tangential::TangentialSettings& settings, Field& px, Field& py,
+                         int& products) {
+  constexpr std::size_t min_contact = 8000;  // measured: below this a coarse start does not pay
+  const Grid& grid = sys.grid;
+  const std::size_t ncon =
+      static_cast<std::size_t>(std::count(sys.contact.begin(), sys.contact.end(), char{1}));
+  if (ncon < min_contact || grid.mx < 16 || grid.my < 16) return false;
+  const Grid coarse{(grid.mx + 1) / 2, (grid.my + 1) / 2, grid.xl,
+                    grid.yl,           2.0 * grid.dx,     2.0 * grid.dy};
+  const std::size_t nc = coarse.size();
+  tangential::TangentialSystem cs;
+  cs.grid = coarse;
+  cs.chi = sys.chi;
+  cs.contact.assign(nc, 0);
+  cs.bound.assign(nc, 0.0);
+  cs.bx.assign(nc, 0.0);
+  cs.by.assign(nc, 0.0);
+  for (int jy = 0; jy < coarse.my; ++jy)
+    for (int jx = 0; jx < coarse.mx; ++jx) {
+      double bound = 0.0, bx = 0.0, by = 0.0;
+      int children = 0, touching = 0;
+      for (int iy = 2 * jy; iy < std::min(2 * jy + 2, grid.my); ++iy)
+        for (int ix = 2 * jx; ix < std::min(2 * jx + 2, grid.mx); ++ix) {
+          const std::size_t i = grid.index(ix, iy);
+          ++children;
+          if (!sys.contact[i]) continue;
+          ++touching;
+          bound += sys.bound[i];
+          bx += sys.bx[i];
+          by += sys.by[i];
+        }
+      const std::size_t j = coarse.index(jx, jy);
+      if (touching == 0) continue;
+      cs.contact[j] = 1;
+      cs.bound[j] = bound / children;
+      cs.bx[j] = 2.0 * bx / touching;
+      cs.by[j] = 2.0 * by / touching;
+    }
+  Field cpx(nc, 0.0), cpy(nc, 0.0);
+  steady_coarse_start(st, level + 1, cs, 2.0 * shift_x, 2.0 * shift_y, material, settings, cpx, cpy,
+                      products);
+  CoarseSteadyOperators& ops =
+      st.coarse_steady_operators(level, coarse, material, 2.0 * shift_x, 2.0 * shift_y);
+  cs.a = ops.view();
+  // Only a start: the division into adhesion and slip is what matters (1e-3 measured 4 % faster
+  // than EPS = 1e-5 at 287×323, with the same number of fine products).
+  tangential::TangentialSettings coarse_settings = settings;
+  coarse_settings.eps = std::max(settings.eps, 1e-3);
+  const tangential::TangentialResult r =
+      tangential::solve_semismooth_newton(cs, coarse_settings, &cpx, &cpy);
+  products += r.iterations;
+  if (!r.converged) return false;
+  for (int iy = 0; iy < grid.my; ++iy)
+    for (int ix = 0; ix < grid.mx; ++ix) {
+      const std::size_t i = grid.index(ix, iy), j = coarse.index(ix / 2, iy / 2);
+      if (!sys.contact[i]) continue;
+      const double g = sys.bound[i], pabs = std::hypot(r.px[j], r.py[j]);
+      if (pabs == 0.0) {
+        px[i] = py[i] = 0.0;
+      } else if (r.state[j] == ElementState::Slip || pabs > g) {
+        px[i] = g * r.px[j] / pabs;
+        py[i] = g * r.py[j] / pabs;
+      } else {
+        px[i] = r.px[j];
+        py[i] = r.py[j];
+      }
+    }
+  return true;
+}
+
 /// Everything the normal and tangential sub-solves of one case share.
 class CaseSolver {
  public:
@@ -357,6 +439,22 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
   // iteration (docs/decisions.md); ConvexGS stays the Gauss–Seidel iteration. Should Newton
   // fail, the preconditioned Jacobi iteration (and after it ConvexGS) starts from its result.
   if (kind == TangentialSolverKind::ConvexGS) return solve_convex_gs(sys, settings, px0, py0);
+  Field start_x, start_y;
+  const bool cold =
+      (px0 == nullptr ||
+       std::all_of(px0->begin(), px0->end(), [](double v) { return v == 0.0; })) &&
+      (py0 == nullptr || std::all_of(py0->begin(), py0->end(), [](double v) { return v == 0.0; }));
+  if (t == 3 && cold) {
+    start_x.assign(n, 0.0);
+    start_y.assign(n, 0.0);
+    int coarse_products = 0;
+    if (steady_coarse_start(st_, 1, sys, tops_->shift_x, tops_->shift_y, sol_.material, settings,
+                            start_x, start_y, coarse_products)) {
+      px0 = &start_x;
+      py0 = &start_y;
+    }
+    sol_.solver.tangential_coarse_iterations += coarse_products;
+  }
   TangentialResult newton = solve_semismooth_newton(sys, settings, px0, py0);
   if (newton.converged) return newton;
   notes_.push_back(newton.message + "; continuing with the preconditioned Jacobi iteration");

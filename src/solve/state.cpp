@@ -164,4 +164,34 @@ TangentialOperators& State::Impl::tangential_operators(const Grid& grid,
   return *tangential;
 }
 
+CoarseSteadyOperators& State::Impl::coarse_steady_operators(int level, const Grid& grid,
+                                                            const CombinedMaterial& material,
+                                                            double shift_x, double shift_y) {
+  const std::size_t k = static_cast<std::size_t>(level - 1);
+  if (coarse_steady.size() <= k) coarse_steady.resize(k + 1);
+  auto& ops = coarse_steady[k];
+  if (ops && same_grid_and_material(ops->grid, grid, ops->material, material) &&
+      ops->shift_x == shift_x && ops->shift_y == shift_y)
+    return *ops;
+  using elastic::Component;
+  using elastic::make_kernel;
+  ops = std::make_unique<CoarseSteadyOperators>();
+  ops->grid = grid;
+  ops->material = material;
+  ops->shift_x = shift_x;
+  ops->shift_y = shift_y;
+  const elastic::Kernel cxx = make_kernel(Component::xx, grid, material);
+  const elastic::Kernel cxy = make_kernel(Component::xy, grid, material);
+  const elastic::Kernel cyy = make_kernel(Component::yy, grid, material);
+  ops->xx = difference(cxx, make_kernel(Component::xx, grid, material, shift_x, shift_y));
+  ops->xy = difference(cxy, make_kernel(Component::xy, grid, material, shift_x, shift_y));
+  ops->yy = difference(cyy, make_kernel(Component::yy, grid, material, shift_x, shift_y));
+  ops->preconditioner =
+      std::make_unique<tangential::TangentialPreconditioner>(cxx, cxy, cyy, options.fft);
+  ops->a = std::make_unique<elastic::BlockConvolution>(
+      2, 2, std::vector<const elastic::Kernel*>{&ops->xx, &ops->xy, &ops->xy, &ops->yy},
+      options.fft, options.fft_planning);
+  return *ops;
+}
+
 }  // namespace rollcontact

@@ -56,6 +56,21 @@ struct TangentialOperators {
   }
 };
 
+/// The steady-rolling operator of a coarse level of the nested-iteration start: A = (C − C′)_tt
+/// with C′ one (coarse) step downstream, its FFT product and the preconditioner from C_tt.
+struct CoarseSteadyOperators {
+  Grid grid;
+  CombinedMaterial material;
+  double shift_x = 0.0, shift_y = 0.0;
+  elastic::Kernel xx, xy, yy;
+  std::unique_ptr<elastic::BlockConvolution> a;
+  std::unique_ptr<tangential::TangentialPreconditioner> preconditioner;
+
+  tangential::TangentialOperator view() const {
+    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), false};
+  }
+};
+
 struct State::Impl {
   SolveOptions options;
   std::unique_ptr<NormalOperators> normal;  ///< rebuilt when grid or material change
@@ -63,6 +78,8 @@ struct State::Impl {
   /// coarse as `normal`).
   std::vector<std::unique_ptr<NormalOperators>> coarse_normal;
   std::unique_ptr<TangentialOperators> tangential;  ///< rebuilt when grid, material or step change
+  /// Steady-rolling operators of the coarser grids (level 1 = twice as coarse as `tangential`).
+  std::vector<std::unique_ptr<CoarseSteadyOperators>> coarse_steady;
   std::optional<Solution> previous;  ///< last solved case (P=0 continuation, warm starts)
 
   /// The normal operators for this grid and material, built on first use and kept.
@@ -70,6 +87,11 @@ struct State::Impl {
   /// The same for coarse level `level` ≥ 1.
   NormalOperators& coarse_normal_operators(int level, const Grid& grid,
                                            const CombinedMaterial& material);
+  /// Coarse steady-rolling operators for level `level` ≥ 1 with the rolling step (shift_x,
+  /// shift_y).
+  CoarseSteadyOperators& coarse_steady_operators(int level, const Grid& grid,
+                                                 const CombinedMaterial& material, double shift_x,
+                                                 double shift_y);
   /// The tangential operators for T = 1, 2, 3 with the rolling step (shift_x, shift_y) [mm].
   TangentialOperators& tangential_operators(const Grid& grid, const CombinedMaterial& material,
                                             int t, double shift_x, double shift_y);
