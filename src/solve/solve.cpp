@@ -142,7 +142,7 @@ bool steady_coarse_start(State::Impl& st, int level, const tangential::Tangentia
                          double shift_x, double shift_y, const CombinedMaterial& material,
                          const tangential::TangentialSettings& settings, Field& px, Field& py,
                          int& products) {
-  constexpr std::size_t min_contact = 8000;  // measured: below this a coarse start does not pay
+  constexpr std::size_t min_contact = 2000;  // measured: 71×81 (3.1k) gains 42 → 32 ms
   const Grid& grid = sys.grid;
   const std::size_t ncon =
       static_cast<std::size_t>(std::count(sys.contact.begin(), sys.contact.end(), char{1}));

@@ -93,19 +93,19 @@ namespace {
 // must not depend on the start. A cold solve (coarse start) against the same case warm-started
 // from a neighbouring creepage (P=0 continuation: no coarse start).
 TEST(SteadyRollingCoarseStart, GivesTheSameSolutionAsAWarmStart) {
-  Problem p = test::hertz_problem(2.0, 3.0, 5000.0, 82000.0, 0.28, 97, 127, 1.05);
+  Problem p = test::hertz_problem(2.0, 3.0, 5000.0, 82000.0, 0.28, 61, 81, 1.05);
   p.digits.t = 3;
   p.solver.eps = 1e-7;
   p.kinematics.veloc = 10000.0;
   p.kinematics.chi = 0.0;
-  p.kinematics.dq = 2.0 * 2.1 / 97;
+  p.kinematics.dq = 2.0 * 2.1 / 61;
   p.kinematics.cksi = 0.0005;
   p.kinematics.ceta = -0.0002;
   p.kinematics.cphi = 0.0002;
   State cold_state;
   const Solution cold = solve(p, cold_state);
   ASSERT_TRUE(cold.solver.converged) << cold.solver.message;
-  EXPECT_GT(cold.statistics.ncon, 8000);
+  EXPECT_GT(cold.statistics.ncon, 2000);
   EXPECT_GT(cold.solver.tangential_coarse_iterations, 0);  // the coarse start was used
   EXPECT_GT(cold.statistics.nslip, cold.statistics.ncon / 5);  // partial slip
   EXPECT_LT(cold.statistics.nslip, cold.statistics.ncon * 4 / 5);
