@@ -59,8 +59,9 @@ class SemismoothNewton {
     // predicted slip reverses, whatever r; from adhesion it turns to slip when |p − r·S| > g,
     // where S carries the inexactness of the Krylov solve. A small r makes that test follow the
     // traction (fewest Newton steps for shifts: 31–34 products at every benchmark grid). In
-    // steady rolling the adhesion front moves about one element per step along the rows and a
-    // larger r moves it faster; 0.5 measured best (0.2–0.8 tried, docs/benchmarks.md).
+    // steady rolling the adhesion front moves about one element per step along the rows;
+    // 0.5 measured best there (287×323: 268, 161 and 507 products at 0.2, 0.5 and 0.8; see
+    // docs/decisions.md).
     r_ = (sys.a.symmetric ? 0.03 : 0.5) * 2.0 / (d_[0] + d_[3]);
     for (auto* v : {&sx_, &sy_, &fx_, &fy_, &ux_, &uy_, &ax_, &ay_}) v->assign(n_, 0.0);
   }
