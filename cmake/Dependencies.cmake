@@ -9,6 +9,8 @@ find_package(CLI11 REQUIRED)
 find_package(tomlplusplus 3.3 REQUIRED)
 if(ROLLCONTACT_WITH_FFTW)
   pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+  # Single precision, for the preconditioners (same Debian package, libfftw3-dev).
+  pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 endif()
 if(ROLLCONTACT_BUILD_TESTS)
   find_package(GTest REQUIRED)

@@ -65,6 +65,13 @@ std::unique_ptr<FftEngine> make_fft_engine(FftBackendKind kind, int n_fast, int 
   return detail::make_kiss_engine(n_fast, n_slow);
 }
 
+std::unique_ptr<SingleCirculant> make_single_circulant(FftBackendKind kind, int n_fast, int n_slow,
+                                                       FftPlanning planning) {
+  if (n_fast < 1 || n_slow < 1) return nullptr;
+  if (resolve_fft_backend(kind) != FftBackendKind::Fftw) return nullptr;
+  return detail::make_fftw_single_circulant(n_fast, n_slow, planning);
+}
+
 int good_fft_size(int n_min) {
   if (n_min < 1) throw ProblemError("good_fft_size: size must be at least 1");
   for (int n = n_min;; ++n) {

@@ -10,6 +10,10 @@ namespace rollcontact::elastic::detail {
 /// FFTW3 engine (only when ROLLCONTACT_HAVE_FFTW; otherwise throws NotSupportedError).
 std::unique_ptr<FftEngine> make_fftw_engine(int n_fast, int n_slow, FftPlanning planning);
 
+/// FFTW3 single-precision convolution (nullptr when FFTW is not built).
+std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int n_fast, int n_slow,
+                                                            FftPlanning planning);
+
 /// Double-precision KISS FFT engine (Eigen's unsupported FFT module).
 std::unique_ptr<FftEngine> make_kiss_engine(int n_fast, int n_slow);
 

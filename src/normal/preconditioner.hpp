@@ -51,7 +51,8 @@ class CirculantPreconditioner final : public Preconditioner {
   void convolve(const double* r);  // M·r into the first my rows of the engine's real array
 
   int mx_, my_, nx_, ny_;
-  std::unique_ptr<elastic::FftEngine> engine_;  // holds the inverse symbol (with 1/(nx ny))
+  std::unique_ptr<elastic::FftEngine> engine_;        // holds the inverse symbol (with 1/(nx ny))
+  std::unique_ptr<elastic::SingleCirculant> single_;  // instead of engine_ where available
 };
 
 }  // namespace rollcontact::normal
