@@ -106,7 +106,7 @@ TEST(SteadyRollingCoarseStart, GivesTheSameSolutionAsAWarmStart) {
   const Solution cold = solve(p, cold_state);
   ASSERT_TRUE(cold.solver.converged) << cold.solver.message;
   EXPECT_GT(cold.statistics.ncon, 2000);
-  EXPECT_GT(cold.solver.tangential_coarse_iterations, 0);  // the coarse start was used
+  EXPECT_GT(cold.solver.tangential_coarse_iterations, 0);      // the coarse start was used
   EXPECT_GT(cold.statistics.nslip, cold.statistics.ncon / 5);  // partial slip
   EXPECT_LT(cold.statistics.nslip, cold.statistics.ncon * 4 / 5);
   expect_coulomb(cold, 0.3);
