@@ -32,7 +32,7 @@ CombinedMaterial combine_materials(double nu1, double nu2, double g1, double g2)
   m.nu = 0.5 * m.g * (nu1 / g1 + nu2 / g2);
   // Minus sign: K > 0 when body 1 is the more compressible one (bentall: aluminium on steel,
   // K = +0.100; spence35: soft body 1 on rigid body 2, K = +0.5).
-  m.k = 0.25 * m.g * ((1.0 - 2.0 * nu1) / g1 - (1.0 - 2.0 * nu2) / g2);
+  m.k = material_difference_k(nu1, nu2, g1, g2);
   return m;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "elastic/material.hpp"
 #include "rollcontact/problem.hpp"
 
 namespace rollcontact::io {
@@ -20,11 +21,9 @@ inline bool is_multiple(double x, double h) {
 }
 
 /// Kalker's material difference parameter K as the readers test it for the MAXOUT override
-/// (0 for quasi-identical bodies).
+/// (0 for quasi-identical bodies); same definition as the solver's.
 inline double material_k(const Materials& m) {
-  const double a = (1.0 - 2.0 * m.poiss1) / m.gg1 - (1.0 - 2.0 * m.poiss2) / m.gg2;
-  const double b = (1.0 - m.poiss1) / m.gg1 + (1.0 - m.poiss2) / m.gg2;
-  return 0.25 * a / b;
+  return elastic::material_difference_k(m.poiss1, m.poiss2, m.gg1, m.gg2);
 }
 
 }  // namespace rollcontact::io
