@@ -27,8 +27,13 @@ class BlockConvolution {
  private:
   int n_out_, n_in_, mx_, my_;
   std::unique_ptr<FftEngine> engine_;
-  std::vector<std::vector<std::complex<double>>> kernel_hat_;  // per block, empty = zero
-  std::vector<std::vector<std::complex<double>>> input_hat_;   // per input, scratch
+  /// Symbol of block (i, j) in the engine's channel layout, or nullptr for a zero block.
+  const std::complex<double>* block(int i, int j) const noexcept;
+
+  // Distinct kernel spectra (normalisation included) and, per block, the index of its spectrum
+  // (−1: zero block).
+  std::vector<std::vector<std::complex<double>>> spectra_;
+  std::vector<int> block_spectrum_;
 };
 
 }  // namespace rollcontact::elastic

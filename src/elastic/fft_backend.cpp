@@ -2,6 +2,7 @@
 
 #include "elastic/fft_backend.hpp"
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 
@@ -48,6 +49,26 @@ void FftEngine::execute_convolution(int rows_in, int rows_out) {
   execute_forward(rows_in);
   multiply(spectrum_data(), symbol_.data(), spectrum_size());
   execute_inverse(rows_out);
+}
+
+void FftEngine::set_channel_count(int count) {
+  channels_.assign(static_cast<std::size_t>(count),
+                   std::vector<std::complex<double>>(spectrum_size()));
+}
+
+void FftEngine::forward_to_channel(int rows_in, int c) {
+  execute_forward(rows_in);
+  std::copy_n(spectrum_data(), spectrum_size(), channel(c));
+}
+
+void FftEngine::inverse_from_channel(int c, int rows_out) {
+  std::copy_n(channel(c), spectrum_size(), spectrum_data());
+  execute_inverse(rows_out);
+}
+
+void FftEngine::to_channel_layout(const std::complex<double>* spectrum,
+                                  std::complex<double>* out) const {
+  std::copy_n(spectrum, spectrum_size(), out);
 }
 
 std::unique_ptr<FftEngine> make_fft_engine(FftBackendKind kind, int n_fast, int n_slow,

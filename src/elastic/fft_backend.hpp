@@ -44,6 +44,21 @@ class FftEngine {
   /// keep the spectrum in its own layout between the transforms. spectrum_data() is destroyed.
   virtual void execute_convolution(int rows_in, int rows_out);
 
+  /// Spectral buffers ("channels") for products with several inputs and outputs
+  /// (BlockConvolution): `count` buffers of spectrum_size() values in the engine's own layout,
+  /// the one execute_convolution() uses between its transforms (FFTW: column-major). Allocating
+  /// may make plans; real_data() and spectrum_data() are destroyed.
+  virtual void set_channel_count(int count);
+  virtual std::complex<double>* channel(int c) noexcept { return channels_[c].data(); }
+  /// real_data() → channel c, with the row pruning of execute_forward(rows_in).
+  virtual void forward_to_channel(int rows_in, int c);
+  /// channel c → real_data(), with the row pruning of execute_inverse(rows_out). Channel c and
+  /// spectrum_data() are destroyed.
+  virtual void inverse_from_channel(int c, int rows_out);
+  /// A spectrum in the layout of spectrum_data() rearranged into the channel layout (symbols).
+  virtual void to_channel_layout(const std::complex<double>* spectrum,
+                                 std::complex<double>* out) const;
+
   int n_fast() const noexcept { return n_fast_; }
   int n_slow() const noexcept { return n_slow_; }
   std::size_t spectrum_size() const noexcept {
@@ -61,6 +76,7 @@ class FftEngine {
                        std::size_t count) noexcept;
 
   std::vector<std::complex<double>> symbol_;  // set_convolution_symbol(), in the engine's layout
+  std::vector<std::vector<std::complex<double>>> channels_;  // default channels (row-major)
 
  private:
   int n_fast_, n_slow_;

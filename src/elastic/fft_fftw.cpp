@@ -105,26 +105,9 @@ class FftwEngine final : public FftEngine {
   // copying them to a buffer and back in place for each direction (the product on the wheel/rail
   // grids got 5–17 % faster).
   void set_convolution_symbol(const std::complex<double>* symbol) override {
-    const std::size_t half = static_cast<std::size_t>(n_fast() / 2 + 1);
-    const std::size_t ns = static_cast<std::size_t>(n_slow());
     symbol_.resize(spectrum_size());
-    for (std::size_t j = 0; j < ns; ++j) {
-      for (std::size_t k = 0; k < half; ++k) symbol_[k * ns + j] = symbol[j * half + k];
-    }
-    if (columns_ != nullptr) return;
-    columns_ = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * spectrum_size()));
-    if (columns_ == nullptr) throw std::bad_alloc();
-    const int nf = n_fast(), n = n_slow(), h = nf / 2 + 1;
-    {
-      std::lock_guard<std::mutex> lock(planner_mutex());
-      convolution_forward_ = fftw_plan_many_dft(1, &n, h, spectrum_, nullptr, h, 1, columns_,
-                                                nullptr, 1, n, FFTW_FORWARD, flags_);
-      convolution_inverse_ = fftw_plan_many_dft(1, &n, h, columns_, nullptr, 1, n, spectrum_,
-                                                nullptr, h, 1, FFTW_BACKWARD, flags_);
-    }
-    if (convolution_forward_ == nullptr || convolution_inverse_ == nullptr) {
-      throw Error("FFTW could not create a convolution plan");
-    }
+    to_channel_layout(symbol, symbol_.data());
+    ensure_convolution_plans();
   }
   void execute_convolution(int rows_in, int rows_out) override {
     rows_in = std::clamp(rows_in, 0, n_slow());
@@ -145,7 +128,73 @@ class FftwEngine final : public FftEngine {
     fftw_execute(out.rows_inverse);
   }
 
+  // Channels in the column-major layout of execute_convolution(): the same out-of-place plans,
+  // executed on other (equally aligned, fftw_malloc'd) arrays.
+  void set_channel_count(int count) override {
+    ensure_convolution_plans();
+    free_channels();
+    for (int c = 0; c < count; ++c) {
+      auto* buffer =
+          static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * spectrum_size()));
+      if (buffer == nullptr) throw std::bad_alloc();
+      channels_fftw_.push_back(buffer);
+    }
+  }
+  std::complex<double>* channel(int c) noexcept override {
+    return reinterpret_cast<std::complex<double>*>(channels_fftw_[static_cast<std::size_t>(c)]);
+  }
+  void forward_to_channel(int rows_in, int c) override {
+    rows_in = std::clamp(rows_in, 0, n_slow());
+    fftw_complex* out = channels_fftw_[static_cast<std::size_t>(c)];
+    if (rows_in == 0) {
+      std::fill(out[0], out[0] + 2 * spectrum_size(), 0.0);
+      return;
+    }
+    const Pruned& in = pruned(rows_in);
+    fftw_execute(in.rows_forward);
+    std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
+    fftw_execute_dft(convolution_forward_, spectrum_, out);
+  }
+  void inverse_from_channel(int c, int rows_out) override {
+    rows_out = std::clamp(rows_out, 0, n_slow());
+    if (rows_out == 0) return;
+    const Pruned& out = pruned(rows_out);
+    fftw_execute_dft(convolution_inverse_, channels_fftw_[static_cast<std::size_t>(c)], spectrum_);
+    fftw_execute(out.rows_inverse);
+  }
+  void to_channel_layout(const std::complex<double>* spectrum,
+                         std::complex<double>* out) const override {
+    const std::size_t half = static_cast<std::size_t>(n_fast() / 2 + 1);
+    const std::size_t ns = static_cast<std::size_t>(n_slow());
+    for (std::size_t j = 0; j < ns; ++j) {
+      for (std::size_t k = 0; k < half; ++k) out[k * ns + j] = spectrum[j * half + k];
+    }
+  }
+
  private:
+  /// The out-of-place slow-index transforms between spectrum_ and the column-major columns_.
+  void ensure_convolution_plans() {
+    if (columns_ != nullptr) return;
+    columns_ = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * spectrum_size()));
+    if (columns_ == nullptr) throw std::bad_alloc();
+    const int nf = n_fast(), n = n_slow(), h = nf / 2 + 1;
+    {
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      convolution_forward_ = fftw_plan_many_dft(1, &n, h, spectrum_, nullptr, h, 1, columns_,
+                                                nullptr, 1, n, FFTW_FORWARD, flags_);
+      convolution_inverse_ = fftw_plan_many_dft(1, &n, h, columns_, nullptr, 1, n, spectrum_,
+                                                nullptr, h, 1, FFTW_BACKWARD, flags_);
+    }
+    if (convolution_forward_ == nullptr || convolution_inverse_ == nullptr) {
+      throw Error("FFTW could not create a convolution plan");
+    }
+  }
+
+  void free_channels() noexcept {
+    for (fftw_complex* buffer : channels_fftw_) fftw_free(buffer);
+    channels_fftw_.clear();
+  }
+
   /// Plans of the row-pruned transforms for `rows` rows.
   struct Pruned {
     int rows;
@@ -208,6 +257,7 @@ class FftwEngine final : public FftEngine {
     if (real_ != nullptr) fftw_free(real_);
     if (spectrum_ != nullptr) fftw_free(spectrum_);
     if (columns_ != nullptr) fftw_free(columns_);
+    free_channels();
     real_ = nullptr;
     spectrum_ = nullptr;
     columns_ = nullptr;
@@ -221,9 +271,10 @@ class FftwEngine final : public FftEngine {
   fftw_plan columns_forward_ = nullptr;  // in-place slow-index transforms of the half-spectrum
   fftw_plan columns_inverse_ = nullptr;
   std::vector<Pruned> pruned_;
-  fftw_complex* columns_ = nullptr;          // column-major half-spectrum of execute_convolution()
-  fftw_plan convolution_forward_ = nullptr;  // spectrum_ columns → columns_
-  fftw_plan convolution_inverse_ = nullptr;  // columns_ → spectrum_ columns
+  fftw_complex* columns_ = nullptr;           // column-major half-spectrum of execute_convolution()
+  fftw_plan convolution_forward_ = nullptr;   // spectrum_ columns → columns_
+  fftw_plan convolution_inverse_ = nullptr;   // columns_ → spectrum_ columns
+  std::vector<fftw_complex*> channels_fftw_;  // set_channel_count(), column-major like columns_
 };
 
 class FftwSingleCirculant final : public SingleCirculant {

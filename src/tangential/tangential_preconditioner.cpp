@@ -49,35 +49,48 @@ TangentialPreconditioner::TangentialPreconditioner(const elastic::Kernel& xx,
     ixy_[q] = -scale * b / det;
     iyy_[q] = scale * a / det;
   }
-  hx_.resize(nspec);
-  hy_.resize(nspec);
+  // The symbols in the engine's channel layout (a real symbol, as a complex spectrum).
+  auto to_layout = [&](std::vector<double>& v) {
+    std::vector<std::complex<double>> spectrum(v.begin(), v.end()), layout(nspec);
+    engine_->to_channel_layout(spectrum.data(), layout.data());
+    for (std::size_t q = 0; q < nspec; ++q) v[q] = layout[q].real();
+  };
+  to_layout(ixx_);
+  to_layout(ixy_);
+  to_layout(iyy_);
+  // Channels 0, 1: transformed residuals; 2, 3: the results being formed.
+  engine_->set_channel_count(4);
 }
 
 void TangentialPreconditioner::apply(const double* rx, const double* ry, double* zx, double* zy) {
   const std::size_t nspec = engine_->spectrum_size();
   double* real = engine_->real_data();
-  std::complex<double>* spec = engine_->spectrum_data();
-  auto forward = [&](const double* r, std::vector<std::complex<double>>& out) {
+  auto forward = [&](const double* r, int c) {
     for (int iy = 0; iy < my_; ++iy) {
       double* dst = real + static_cast<std::size_t>(nx_) * iy;
       std::copy_n(r + static_cast<std::size_t>(mx_) * iy, mx_, dst);
       std::fill(dst + mx_, dst + nx_, 0.0);
     }
-    engine_->execute_forward(my_);
-    std::copy_n(spec, nspec, out.data());
+    engine_->forward_to_channel(my_, c);
   };
-  auto inverse = [&](double* z) {
-    engine_->execute_inverse(my_);
+  auto inverse = [&](int c, double* z) {
+    engine_->inverse_from_channel(c, my_);
     for (int iy = 0; iy < my_; ++iy)
       std::copy_n(real + static_cast<std::size_t>(nx_) * iy, mx_,
                   z + static_cast<std::size_t>(mx_) * iy);
   };
-  forward(rx, hx_);
-  forward(ry, hy_);
-  for (std::size_t q = 0; q < nspec; ++q) spec[q] = ixx_[q] * hx_[q] + ixy_[q] * hy_[q];
-  inverse(zx);
-  for (std::size_t q = 0; q < nspec; ++q) spec[q] = ixy_[q] * hx_[q] + iyy_[q] * hy_[q];
-  inverse(zy);
+  forward(rx, 0);
+  forward(ry, 1);
+  const std::complex<double>* hx = engine_->channel(0);
+  const std::complex<double>* hy = engine_->channel(1);
+  std::complex<double>* ox = engine_->channel(2);
+  std::complex<double>* oy = engine_->channel(3);
+  for (std::size_t q = 0; q < nspec; ++q) {
+    ox[q] = ixx_[q] * hx[q] + ixy_[q] * hy[q];
+    oy[q] = ixy_[q] * hx[q] + iyy_[q] * hy[q];
+  }
+  inverse(2, zx);
+  inverse(3, zy);
 }
 
 }  // namespace rollcontact::tangential

@@ -25,8 +25,8 @@ class TangentialPreconditioner {
  private:
   int mx_, my_, nx_, ny_;
   std::unique_ptr<elastic::FftEngine> engine_;
-  std::vector<double> ixx_, ixy_, iyy_;  // inverse symbol per half-spectrum entry (scaled)
-  std::vector<std::complex<double>> hx_, hy_;
+  // Inverse symbol per half-spectrum entry (scaled), in the engine's channel layout.
+  std::vector<double> ixx_, ixy_, iyy_;
 };
 
 }  // namespace rollcontact::tangential
