@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(
       "Exit status: 0 success; 1 a case failed (not supported, inadmissible, not converged) or a "
-      "comparison failed; 2 unreadable input (nothing written); 3 internal error.");
+      "comparison failed; 2 unreadable input or bad command line (nothing written); 3 internal "
+      "error.");
 
   std::vector<std::pair<CLI::App*, CommandRunner>> commands;
   auto add = [&](CommandRunner (*adder)(CLI::App&)) {
@@ -33,7 +34,15 @@ int main(int argc, char** argv) {
   add(add_validate_command);
   add(add_table_command);
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // CLI11's own codes (105 for a missing file …) would contradict the documented statuses.
+    app.exit(e);
+    return exit_input_error;
+  }
 
   try {
     for (auto& [cmd, runner] : commands)
