@@ -17,7 +17,8 @@ double dot(const std::vector<double>& a, const std::vector<double>& b) {
 }  // namespace
 
 KrylovResult solve_pcg(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
-                       std::vector<double>& x, double rtol, int max_it) {
+                       std::vector<double>& x, double rtol, int max_it,
+                       const StepObserver& on_step) {
   const std::size_t n = b.size();
   KrylovResult res;
   x.assign(n, 0.0);
@@ -40,6 +41,7 @@ KrylovResult solve_pcg(const LinearMap& a, const LinearMap& m, const std::vector
       x[k] += alpha * d[k];
       r[k] -= alpha * q[k];
     }
+    if (on_step) on_step(alpha);
     m(r, z);
     const double rz_new = dot(r, z);
     res.relative_residual = std::sqrt(std::max(rz_new, 0.0) / rz0);

@@ -17,9 +17,14 @@ struct KrylovResult {
   bool converged = false;
 };
 
+/// Called by PCG after each update x += α·d, before the preconditioner is applied: lets a caller
+/// accumulate side results of the last application of A (e.g. full-grid products) with weight α.
+using StepObserver = std::function<void(double alpha)>;
+
 /// Solves A x = b from x = 0 until ‖r‖ ≤ rtol·‖b‖ (in the M-norm: √(rᵀ M r)), at most max_it.
 KrylovResult solve_pcg(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
-                       std::vector<double>& x, double rtol, int max_it);
+                       std::vector<double>& x, double rtol, int max_it,
+                       const StepObserver& on_step = nullptr);
 
 /// Right-preconditioned GMRES(restart) from x = 0 until ‖b − A x‖ ≤ rtol·‖b‖, at most max_it.
 KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,

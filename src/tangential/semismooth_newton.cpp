@@ -92,10 +92,13 @@ class SemismoothNewton {
         break;
       }
       ++newton;
-      products += newton_direction(px, py, dpx, dpy);
-      // A·δp for the line search (linear in the step length).
-      sys_.a.apply(dpx, dpy, ax_, ay_);
-      ++products;
+      bool have_a_dp = false;
+      products += newton_direction(px, py, dpx, dpy, have_a_dp);
+      // A·δp for the line search (linear in the step length), unless PCG accumulated it.
+      if (!have_a_dp) {
+        sys_.a.apply(dpx, dpy, ax_, ay_);
+        ++products;
+      }
       double lambda = 1.0, best_lambda = 1.0, best = std::numeric_limits<double>::infinity();
       for (int trial = 0; trial < 6; ++trial, lambda *= 0.5) {
         for (std::size_t i : elements_) {
@@ -173,8 +176,11 @@ class SemismoothNewton {
   }
 
   /// Linearises F at p, solves the Newton system and returns δp; returns the products used.
+  /// With PCG, A·δp on the contact elements is accumulated in (ax_, ay_) from the products the
+  /// iteration makes anyway (A·δ0 + Σ α·A·Q·d), saving one product per Newton step; a_dp_known
+  /// tells the caller.
   int newton_direction(const std::vector<double>& px, const std::vector<double>& py,
-                       std::vector<double>& dpx, std::vector<double>& dpy) {
+                       std::vector<double>& dpx, std::vector<double>& dpy, bool& a_dp_known) {
     // Classification and the fixed part δ0 of δp (slip magnitudes, zero-bound elements).
     std::size_t nu = 0;
     std::fill(dpx.begin(), dpx.end(), 0.0);
@@ -260,8 +266,26 @@ class SemismoothNewton {
       }
     };
     const double rtol = 0.1;  // inexact Newton: 0.03 and 0.3 measured no better
-    const KrylovResult kr = sys_.a.symmetric ? solve_pcg(op, prec, rhs, y, rtol, max_krylov)
-                                             : solve_gmres(op, prec, rhs, y, rtol, max_krylov);
+    KrylovResult kr;
+    if (sys_.a.symmetric) {
+      // (ux_, uy_) still hold A·δ0; after each PCG step they hold A·Q·d of the step's direction d
+      // (the preconditioner overwrites them only after the observer has run).
+      for (std::size_t i : elements_) {
+        ax_[i] = ux_[i];
+        ay_[i] = uy_[i];
+      }
+      const StepObserver accumulate = [&](double alpha) {
+        for (std::size_t i : elements_) {
+          ax_[i] += alpha * ux_[i];
+          ay_[i] += alpha * uy_[i];
+        }
+      };
+      kr = solve_pcg(op, prec, rhs, y, rtol, max_krylov, accumulate);
+      a_dp_known = true;
+    } else {
+      kr = solve_gmres(op, prec, rhs, y, rtol, max_krylov);
+      a_dp_known = false;
+    }
     products += kr.iterations;
     // δp = δ0 + Q y.
     for (std::size_t k = 0; k < elements_.size(); ++k) {

@@ -55,6 +55,36 @@ TEST(Krylov, ConjugateGradientsSolveAnSpdSystemInAtMostNSteps) {
   EXPECT_LT(relative_residual(a, b, x), 1e-8);
 }
 
+TEST(Krylov, ConjugateGradientsReportEachStepToTheObserver) {
+  // The semismooth Newton iteration accumulates A·x from the observer: Σ α·(A·d) over the
+  // steps, with A·d the operator's last result when the observer runs. Check that contract.
+  const LinearMap base = convection_diffusion(0.0);
+  std::vector<double> last_ad;
+  const LinearMap a = [&](const std::vector<double>& d, std::vector<double>& y) {
+    base(d, y);
+    last_ad = y;
+  };
+  const std::vector<double> b = rhs(60);
+  std::vector<double> ax_accumulated(b.size(), 0.0), x;
+  int steps = 0;
+  const StepObserver observer = [&](double alpha) {
+    ++steps;
+    for (std::size_t i = 0; i < b.size(); ++i) ax_accumulated[i] += alpha * last_ad[i];
+  };
+  // Like the Newton iteration's, this preconditioner reuses the operator's scratch: the
+  // observer must run before it.
+  const LinearMap m = [&](const std::vector<double>& r, std::vector<double>& z) {
+    jacobi(r, z);
+    last_ad.assign(r.size(), 1e300);
+  };
+  const KrylovResult r = solve_pcg(a, m, b, x, 1e-3, 200, observer);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(steps, r.iterations);
+  std::vector<double> ax;
+  base(x, ax);
+  for (std::size_t i = 0; i < b.size(); ++i) EXPECT_NEAR(ax_accumulated[i], ax[i], 1e-12);
+}
+
 TEST(Krylov, ConjugateGradientsStopAtTheRequestedTolerance) {
   const LinearMap a = convection_diffusion(0.0);
   const std::vector<double> b = rhs(400);
