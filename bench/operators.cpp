@@ -52,21 +52,28 @@ std::vector<double> random_field(std::size_t n, unsigned seed) {
   return v;
 }
 
-/// Seconds per forward+inverse pair of the padded real transform, from `reps` repetitions.
-double seconds_per_pair(const Size& s, int reps) {
+/// An engine of the zero-padded size of the grid, filled with a random field.
+std::unique_ptr<elastic::FftEngine> padded_engine(const Size& s) {
   auto engine =
       elastic::make_fft_engine(FftBackendKind::Default, elastic::good_fft_size(2 * s.mx - 1),
                                elastic::good_fft_size(2 * s.my - 1));
   const auto field = random_field(engine->real_size(), 1);
   std::copy(field.begin(), field.end(), engine->real_data());
-  engine->execute_forward(engine->n_slow());
-  engine->execute_inverse(engine->n_slow());
+  return engine;
+}
+
+void fft_pair(elastic::FftEngine& engine) {
+  engine.execute_forward(engine.n_slow());
+  engine.execute_inverse(engine.n_slow());
+  benchmark::DoNotOptimize(engine.real_data()[0]);
+}
+
+/// Seconds per forward+inverse pair of the padded real transform, from `reps` repetitions.
+double seconds_per_pair(const Size& s, int reps) {
+  auto engine = padded_engine(s);
+  fft_pair(*engine);
   const auto start = std::chrono::steady_clock::now();
-  for (int r = 0; r < reps; ++r) {
-    engine->execute_forward(engine->n_slow());
-    engine->execute_inverse(engine->n_slow());
-    benchmark::DoNotOptimize(engine->real_data()[0]);
-  }
+  for (int r = 0; r < reps; ++r) fft_pair(*engine);
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / reps;
 }
 
@@ -74,24 +81,25 @@ int repetitions(const Size& s) {
   return s.mx < 200 ? 50 : 10;
 }
 
-void label(benchmark::State& bstate, const Size& s, double pair_seconds, double op_seconds) {
-  bstate.counters["in_pairs"] = op_seconds / pair_seconds;
-  bstate.counters["pair_ms"] = 1e3 * pair_seconds;
+/// Runs `apply` in the benchmark loop and reports its cost in padded FFT pairs of grid s.
+template <class Apply>
+void run_in_pairs(benchmark::State& bstate, const Size& s, Apply&& apply) {
+  const double pair = seconds_per_pair(s, repetitions(s));
+  double total = 0.0;
+  for (auto _ : bstate) {
+    const auto start = std::chrono::steady_clock::now();
+    apply();
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  bstate.counters["in_pairs"] = total / static_cast<double>(bstate.iterations()) / pair;
+  bstate.counters["pair_ms"] = 1e3 * pair;
   bstate.SetLabel(std::to_string(s.mx) + "x" + std::to_string(s.my));
 }
 
 void BM_FftPair(benchmark::State& bstate) {
   const Size s = sizes[bstate.range(0)];
-  auto engine =
-      elastic::make_fft_engine(FftBackendKind::Default, elastic::good_fft_size(2 * s.mx - 1),
-                               elastic::good_fft_size(2 * s.my - 1));
-  const auto field = random_field(engine->real_size(), 1);
-  std::copy(field.begin(), field.end(), engine->real_data());
-  for (auto _ : bstate) {
-    engine->execute_forward(engine->n_slow());
-    engine->execute_inverse(engine->n_slow());
-    benchmark::DoNotOptimize(engine->real_data()[0]);
-  }
+  auto engine = padded_engine(s);
+  for (auto _ : bstate) fft_pair(*engine);
   bstate.SetLabel(std::to_string(s.mx) + "x" + std::to_string(s.my));
 }
 
@@ -102,20 +110,15 @@ void BM_TangentialProduct(benchmark::State& bstate) {
   const auto xy = elastic::make_kernel(Component::xy, g, steel());
   const auto yy = elastic::make_kernel(Component::yy, g, steel());
   elastic::BlockConvolution a(2, 2, {&xx, &xy, &xy, &yy}, FftBackendKind::Default);
-  const std::size_t n = static_cast<std::size_t>(s.mx) * static_cast<std::size_t>(s.my);
+  const std::size_t n = g.size();
   const auto px = random_field(n, 2), py = random_field(n, 3);
   std::vector<double> ux(n), uy(n);
   const double* in[2] = {px.data(), py.data()};
   double* out[2] = {ux.data(), uy.data()};
-  const double pair = seconds_per_pair(s, repetitions(s));
-  double total = 0.0;
-  for (auto _ : bstate) {
-    const auto start = std::chrono::steady_clock::now();
+  run_in_pairs(bstate, s, [&] {
     a.apply(in, out);
     benchmark::DoNotOptimize(ux[0]);
-    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  label(bstate, s, pair, total / static_cast<double>(bstate.iterations()));
+  });
 }
 
 void BM_TangentialPreconditioner(benchmark::State& bstate) {
@@ -125,18 +128,13 @@ void BM_TangentialPreconditioner(benchmark::State& bstate) {
   const auto xy = elastic::make_kernel(Component::xy, g, steel());
   const auto yy = elastic::make_kernel(Component::yy, g, steel());
   tangential::TangentialPreconditioner m(xx, xy, yy, FftBackendKind::Default);
-  const std::size_t n = static_cast<std::size_t>(s.mx) * static_cast<std::size_t>(s.my);
+  const std::size_t n = g.size();
   const auto rx = random_field(n, 4), ry = random_field(n, 5);
   std::vector<double> zx(n), zy(n);
-  const double pair = seconds_per_pair(s, repetitions(s));
-  double total = 0.0;
-  for (auto _ : bstate) {
-    const auto start = std::chrono::steady_clock::now();
+  run_in_pairs(bstate, s, [&] {
     m.apply(rx.data(), ry.data(), zx.data(), zy.data());
     benchmark::DoNotOptimize(zx[0]);
-    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  label(bstate, s, pair, total / static_cast<double>(bstate.iterations()));
+  });
 }
 
 }  // namespace

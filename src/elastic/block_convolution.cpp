@@ -118,6 +118,17 @@ void BlockConvolution::apply(const double* const* p, double* const* u) {
     }
     engine_->forward_to_channel(my_, j);
   }
+  // Output spectra in channels n_in … n_in+n_out−1; returns false for a row of zero blocks.
+  auto form_output = [&](int i) {
+    bool any = false;
+    for (int j = 0; j < n_in_; ++j) {
+      const std::complex<double>* k = block(i, j);
+      if (k == nullptr) continue;
+      multiply_into(engine_->channel(n_in_ + i), k, engine_->channel(j), nspec, any);
+      any = true;
+    }
+    return any;
+  };
   const bool full_2x2 = n_out_ == 2 && n_in_ == 2 && block(0, 0) != nullptr &&
                         block(0, 1) != nullptr && block(1, 0) != nullptr && block(1, 1) != nullptr;
   if (full_2x2) {
@@ -125,15 +136,7 @@ void BlockConvolution::apply(const double* const* p, double* const* u) {
                  block(1, 1), engine_->channel(0), engine_->channel(1), nspec);
   }
   for (int i = 0; i < n_out_; ++i) {
-    std::complex<double>* out = engine_->channel(n_in_ + i);
-    bool any = full_2x2;
-    for (int j = 0; j < n_in_ && !full_2x2; ++j) {
-      const std::complex<double>* k = block(i, j);
-      if (k == nullptr) continue;
-      multiply_into(out, k, engine_->channel(j), nspec, any);
-      any = true;
-    }
-    if (!any) {
+    if (!full_2x2 && !form_output(i)) {
       std::fill_n(u[i], mx * static_cast<std::size_t>(my_), 0.0);
       continue;
     }

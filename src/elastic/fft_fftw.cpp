@@ -118,14 +118,9 @@ class FftwEngine final : public FftEngine {
                   0.0);
       return;
     }
-    const Pruned in = pruned(rows_in);  // copies: a second pruned() call may grow pruned_
-    const Pruned out = pruned(rows_out);
-    fftw_execute(in.rows_forward);
-    std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
-    fftw_execute(convolution_forward_);
+    forward_columns(rows_in, columns_);
     multiply(reinterpret_cast<std::complex<double>*>(columns_), symbol_.data(), spectrum_size());
-    fftw_execute(convolution_inverse_);
-    fftw_execute(out.rows_inverse);
+    inverse_columns(columns_, rows_out);
   }
 
   // Channels in the column-major layout of execute_convolution(): the same out-of-place plans,
@@ -150,17 +145,12 @@ class FftwEngine final : public FftEngine {
       std::fill(out[0], out[0] + 2 * spectrum_size(), 0.0);
       return;
     }
-    const Pruned& in = pruned(rows_in);
-    fftw_execute(in.rows_forward);
-    std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
-    fftw_execute_dft(convolution_forward_, spectrum_, out);
+    forward_columns(rows_in, out);
   }
   void inverse_from_channel(int c, int rows_out) override {
     rows_out = std::clamp(rows_out, 0, n_slow());
     if (rows_out == 0) return;
-    const Pruned& out = pruned(rows_out);
-    fftw_execute_dft(convolution_inverse_, channels_fftw_[static_cast<std::size_t>(c)], spectrum_);
-    fftw_execute(out.rows_inverse);
+    inverse_columns(channels_fftw_[static_cast<std::size_t>(c)], rows_out);
   }
   void to_channel_layout(const std::complex<double>* spectrum,
                          std::complex<double>* out) const override {
@@ -188,6 +178,22 @@ class FftwEngine final : public FftEngine {
     if (convolution_forward_ == nullptr || convolution_inverse_ == nullptr) {
       throw Error("FFTW could not create a convolution plan");
     }
+  }
+
+  /// real_data() (rows 0 … rows_in−1, rows_in ≥ 1) → column-major half-spectrum `out`, an array
+  /// aligned like columns_ (the convolution plans are executed on it).
+  void forward_columns(int rows_in, fftw_complex* out) {
+    const Pruned& in = pruned(rows_in);
+    fftw_execute(in.rows_forward);
+    std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
+    fftw_execute_dft(convolution_forward_, spectrum_, out);
+  }
+  /// Column-major half-spectrum `in` (destroyed) → real_data() rows 0 … rows_out−1 (≥ 1).
+  void inverse_columns(fftw_complex* in, int rows_out) {
+    // Before the transforms: planning a new row count saves and restores spectrum_ and real_.
+    const Pruned& out = pruned(rows_out);
+    fftw_execute_dft(convolution_inverse_, in, spectrum_);
+    fftw_execute(out.rows_inverse);
   }
 
   void free_channels() noexcept {

@@ -5,24 +5,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "backends.hpp"
 #include "elastic/block_convolution.hpp"
 #include "elastic/convolution.hpp"
 #include "elastic/influence.hpp"
+#include "random_field.hpp"
 
 namespace rollcontact::elastic {
 namespace {
 
-std::vector<double> random_field(std::size_t n, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> dist(-1.0, 1.0);
-  std::vector<double> p(n);
-  for (double& x : p) x = dist(gen);
-  return p;
-}
+using testing::random_field;
 
 /// u_i = Σ_j K_ij * p_j with DenseConvolution, the oracle.
 std::vector<std::vector<double>> dense_block(int n_out, int n_in,

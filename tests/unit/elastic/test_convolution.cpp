@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "backends.hpp"
 #include "elastic/convolution.hpp"
 #include "elastic/influence.hpp"
+#include "random_field.hpp"
 
 namespace rollcontact::elastic {
 namespace {
@@ -19,10 +19,7 @@ constexpr Component kAllComponents[] = {Component::nn, Component::xx, Component:
                                         Component::nx, Component::ny, Component::yx};
 
 std::vector<double> random_tractions(std::size_t n, unsigned seed, bool sparse) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> dist(-1.0, 1.0);
-  std::vector<double> p(n);
-  for (double& x : p) x = dist(gen);
+  std::vector<double> p = testing::random_field(n, seed);
   if (sparse) {  // like an active set: many exterior elements
     for (std::size_t i = 0; i < n; i += 3) p[i] = 0.0;
   }

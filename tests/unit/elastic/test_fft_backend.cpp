@@ -6,12 +6,12 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
-#include <random>
 #include <string_view>
 #include <vector>
 
 #include "backends.hpp"
 #include "elastic/fft_backend.hpp"
+#include "random_field.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/version.hpp"
 
@@ -20,13 +20,7 @@ namespace {
 
 using Complex = std::complex<double>;
 
-std::vector<double> random_real(std::size_t n, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> dist(-1.0, 1.0);
-  std::vector<double> v(n);
-  for (double& x : v) x = dist(gen);
-  return v;
-}
+using testing::random_field;
 
 /// Direct 2-D DFT half-spectrum X(kf, ks) = Σ x(i, j) e^{−2πi(kf i/nf + ks j/ns)}.
 std::vector<Complex> direct_dft(const std::vector<double>& x, int nf, int ns) {
@@ -61,7 +55,7 @@ TEST_P(FftEngineTest, ForwardMatchesDirectDft) {
     EXPECT_EQ(engine->n_fast(), nf);
     EXPECT_EQ(engine->n_slow(), ns);
     EXPECT_EQ(engine->spectrum_size(), static_cast<std::size_t>((nf / 2 + 1) * ns));
-    const std::vector<double> x = random_real(engine->real_size(), 1u + static_cast<unsigned>(nf));
+    const std::vector<double> x = random_field(engine->real_size(), 1u + static_cast<unsigned>(nf));
     std::vector<Complex> got(engine->spectrum_size());
     engine->forward(x.data(), got.data());
     const std::vector<Complex> expected = direct_dft(x, nf, ns);
@@ -76,7 +70,7 @@ TEST_P(FftEngineTest, RoundTripIsUnnormalised) {
   for (const auto& [nf, ns] : {std::pair{30, 18}, std::pair{25, 27}, std::pair{1, 40},
                                std::pair{64, 1}, std::pair{11, 13}}) {
     auto engine = make_fft_engine(GetParam(), nf, ns);
-    const std::vector<double> x = random_real(engine->real_size(), 7u);
+    const std::vector<double> x = random_field(engine->real_size(), 7u);
     std::vector<Complex> spectrum(engine->spectrum_size());
     std::vector<double> back(engine->real_size());
     engine->forward(x.data(), spectrum.data());
@@ -108,7 +102,7 @@ TEST_P(FftEngineTest, InverseOfSingleFrequency) {
 TEST_P(FftEngineTest, PrunedRowsBehaveAsZeroPadding) {
   const int nf = 20, ns = 18, rows = 7;
   auto engine = make_fft_engine(GetParam(), nf, ns);
-  std::vector<double> x = random_real(engine->real_size(), 3u);
+  std::vector<double> x = random_field(engine->real_size(), 3u);
   std::vector<double> padded = x;
   std::fill(padded.begin() + rows * nf, padded.end(), 0.0);
   std::vector<Complex> expected(engine->spectrum_size());
