@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "io/inp_reader.hpp"
-#include "io/inp_writer.hpp"
-#include "io/toml_case_reader.hpp"
-#include "io/toml_case_writer.hpp"
+#include "format/inp/inp_reader.hpp"
+#include "format/inp/inp_writer.hpp"
+#include "format/toml/toml_case_reader.hpp"
+#include "format/toml/toml_case_writer.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::cli {
@@ -37,11 +37,11 @@ int convert(const ConvertSettings& s) {
                      "case.toml, or convert case.toml case.inp)");
   }
   const std::vector<Problem> problems =
-      is_toml(in) ? io::read_toml_file(in) : io::read_inp_file(in);
+      is_toml(in) ? format::read_toml_file(in) : format::read_inp_file(in);
   if (is_toml(out)) {
-    io::write_toml_file(out, problems);
+    format::write_toml_file(out, problems);
   } else {
-    io::write_inp_file(out, problems);
+    format::write_inp_file(out, problems);
   }
   if (!s.quiet) {
     fmt::print("converted {} case{} from {} to {}\n", problems.size(),

@@ -7,17 +7,17 @@
 #include <sstream>
 #include <string>
 
+#include "batch/run_input.hpp"
 #include "commands.hpp"
-#include "io/atomic_file.hpp"
-#include "io/builtin_example.hpp"
-#include "io/report_writer.hpp"
-#include "io/run_input.hpp"
+#include "format/inp/builtin_example.hpp"
+#include "format/report/report_writer.hpp"
+#include "format/text/atomic_file.hpp"
 
 namespace rollcontact::cli {
 
 namespace {
 
-using io::CaseOutcome;
+using batch::CaseOutcome;
 
 FftBackendKind parse_backend(const std::string& name) {
   if (name == "fftw") return FftBackendKind::Fftw;
@@ -56,7 +56,7 @@ struct RunSettings {
 };
 
 int run_job(const std::filesystem::path& input, const RunSettings& settings, bool show_picture) {
-  io::RunOptions options;
+  batch::RunOptions options;
   options.output_dir = settings.output_dir;
   options.solve.fft = parse_backend(settings.backend);
   options.solve.fft_planning = settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
@@ -66,12 +66,12 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
     print_case_summary(c);
     if (show_picture && c.solved) {
       std::ostringstream pic;
-      io::write_element_division(pic, c.solution, c.problem.digits.t);
+      format::write_element_division(pic, c.solution, c.problem.digits.t);
       fmt::print("{}\n", pic.str());
     }
     if (count > 20 && (k + 1) % 20 == 0) fmt::print(stderr, "  ... {}/{} cases\n", k + 1, count);
   };
-  const auto result = io::run_input_file(input, options);
+  const auto result = batch::run_input_file(input, options);
   if (!quiet)
     fmt::print("wrote {} and {}\n", result.report_path.string(), result.json_path.string());
   return result.failed == 0 ? exit_ok : exit_case_failed;
@@ -112,7 +112,7 @@ CommandRunner add_example_command(CLI::App& app) {
   return [settings] {
     std::filesystem::create_directories(settings->output_dir);
     const auto path = std::filesystem::path(settings->output_dir) / "example.inp";
-    io::write_file_atomically(path, std::string(io::builtin_example_inp));
+    format::write_file_atomically(path, std::string(format::builtin_example_inp));
     if (!settings->quiet) fmt::print("built-in example: {}\n", path.string());
     RunSettings local = *settings;
     local.output_dir.clear();  // outputs next to example.inp

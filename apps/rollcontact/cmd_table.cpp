@@ -16,10 +16,10 @@
 #include <thread>
 #include <vector>
 
+#include "batch/creep_table.hpp"
+#include "batch/creep_table_stats.hpp"
 #include "commands.hpp"
-#include "io/atomic_file.hpp"
-#include "io/creep_table.hpp"
-#include "io/creep_table_stats.hpp"
+#include "format/text/atomic_file.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::cli {
@@ -39,10 +39,10 @@ struct TableOptions {
   bool quiet = false;
 };
 
-std::vector<io::TableRow> read_reference(const std::string& path) {
+std::vector<batch::TableRow> read_reference(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError(path, 0, "cannot open the reference table");
-  return io::read_table_csv(in, path);
+  return batch::read_table_csv(in, path);
 }
 
 /// Atomic write for regular files; direct write for devices, pipes and symbolic links
@@ -57,26 +57,26 @@ void write_output(const std::string& path, const std::string& content) {
     if (!out) throw Error("cannot write " + path);
     return;
   }
-  io::write_file_atomically(path, content);
+  format::write_file_atomically(path, content);
 }
 
 int run_table_command(const TableOptions& o) {
-  io::TableSettings settings;
-  settings.method = io::parse_table_method(o.method);
+  batch::TableSettings settings;
+  settings.method = batch::parse_table_method(o.method);
   settings.bound = o.bound;
   settings.mx = o.mx;
   settings.eps = o.eps;
-  const int bound = io::effective_bound(settings);
+  const int bound = batch::effective_bound(settings);
   if (bound != 0 && bound != 2 && bound != 3)
     throw InputError("--bound", 0, fmt::format("must be 0, 2 or 3, got {}", bound));
   if (settings.mx < 5) throw InputError("--mx", 0, fmt::format("must be at least 5, got {}", o.mx));
   // Read the reference first: a bad file should fail before an hour of computing.
-  std::vector<io::TableRow> reference;
+  std::vector<batch::TableRow> reference;
   if (!o.reference.empty()) reference = read_reference(o.reference);
 
-  const std::vector<io::TableCase> all = io::table_cases();
-  std::vector<io::TableCase> cases;
-  for (int number : io::parse_case_selection(o.cases, all.size()))
+  const std::vector<batch::TableCase> all = batch::table_cases();
+  std::vector<batch::TableCase> cases;
+  for (int number : batch::parse_case_selection(o.cases, all.size()))
     cases.push_back(all[static_cast<std::size_t>(number - 1)]);
   const unsigned hw = std::thread::hardware_concurrency();
   const int threads = o.threads > 0 ? o.threads : static_cast<int>(hw > 0 ? hw : 1);
@@ -89,19 +89,19 @@ int run_table_command(const TableOptions& o) {
     fmt::print(stderr, "\rtable {}: {}/{} cases, {:.1f} s", o.method, done, cases.size(), t);
     std::fflush(stderr);
   };
-  const std::vector<io::TableRow> rows =
-      io::run_table(cases, settings, threads,
-                    o.quiet ? std::function<void(std::size_t)>{} : std::function(progress));
+  const std::vector<batch::TableRow> rows =
+      batch::run_table(cases, settings, threads,
+                       o.quiet ? std::function<void(std::size_t)>{} : std::function(progress));
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   if (!o.quiet) fmt::print(stderr, "\n");
 
   std::ostringstream csv;
-  io::write_table_csv(csv, rows);
+  batch::write_table_csv(csv, rows);
   write_output(o.output, csv.str());
 
-  std::vector<const io::TableRow*> failed;
+  std::vector<const batch::TableRow*> failed;
   for (const auto& r : rows)
     if (!r.converged) failed.push_back(&r);
   const double n = static_cast<double>(rows.size());
@@ -117,11 +117,11 @@ int run_table_command(const TableOptions& o) {
   }
 
   if (!reference.empty()) {
-    const io::TableStatistics st = io::compare_tables(rows, reference);
+    const batch::TableStatistics st = batch::compare_tables(rows, reference);
     const std::string title =
         fmt::format("{} B={} mx={} against {}", o.method, bound, settings.mx, o.reference);
-    if (!o.quiet) fmt::print("\n{}", io::format_statistics_text(st, title));
-    if (!o.stats.empty()) write_output(o.stats, io::format_statistics_markdown(st, title));
+    if (!o.quiet) fmt::print("\n{}", batch::format_statistics_text(st, title));
+    if (!o.stats.empty()) write_output(o.stats, batch::format_statistics_markdown(st, title));
   }
   return failed.empty() ? exit_ok : exit_case_failed;
 }

@@ -16,10 +16,10 @@
 #include <string>
 #include <vector>
 
+#include "batch/validation.hpp"
+#include "batch/validation_summary.hpp"
 #include "commands.hpp"
-#include "io/atomic_file.hpp"
-#include "io/validation.hpp"
-#include "io/validation_summary.hpp"
+#include "format/text/atomic_file.hpp"
 
 namespace rollcontact::cli {
 
@@ -47,9 +47,9 @@ std::string read_text(const std::filesystem::path& path) {
 
 /// Runs `rollcontact run FILE.inp -o OUT -q` as a child process of this very executable: a
 /// crash or abort in one example then fails that example instead of the whole validation.
-io::ExampleRun run_in_child(const io::ExampleFiles& example, const std::filesystem::path& out,
-                            const std::string& backend) {
-  io::ExampleRun run;
+batch::ExampleRun run_in_child(const batch::ExampleFiles& example, const std::filesystem::path& out,
+                               const std::string& backend) {
+  batch::ExampleRun run;
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
   std::filesystem::create_directories(out, ec);
@@ -100,37 +100,37 @@ FftBackendKind backend_kind(const std::string& name) {
   return FftBackendKind::Default;
 }
 
-void print_progress(const io::ExampleResult& r, std::size_t done, std::size_t total) {
-  fmt::print(stderr,
-             "[{:>2}/{}] {:<20} {:>4} cases: {} passed, {} failed, {} not supported ({:.1f} s)\n",
-             done, total, r.name, r.cases.size(), r.count(io::CaseStatus::Passed),
-             r.count(io::CaseStatus::Failed), r.count(io::CaseStatus::NotSupported), r.seconds);
+void print_progress(const batch::ExampleResult& r, std::size_t done, std::size_t total) {
+  fmt::print(
+      stderr, "[{:>2}/{}] {:<20} {:>4} cases: {} passed, {} failed, {} not supported ({:.1f} s)\n",
+      done, total, r.name, r.cases.size(), r.count(batch::CaseStatus::Passed),
+      r.count(batch::CaseStatus::Failed), r.count(batch::CaseStatus::NotSupported), r.seconds);
 }
 
 int run_validation(const ValidateSettings& s) {
-  io::ValidationOptions options;
+  batch::ValidationOptions options;
   options.jobs = s.jobs;
   options.output_dir = s.keep;
   options.solve.fft = backend_kind(s.backend);
   if (!s.in_process) {
-    options.runner = [backend = s.backend](const io::ExampleFiles& e,
+    options.runner = [backend = s.backend](const batch::ExampleFiles& e,
                                            const std::filesystem::path& out) {
       return run_in_child(e, out, backend);
     };
   }
   if (!s.quiet) options.on_example = print_progress;
 
-  const auto results = io::validate_folder(s.folder, options);
+  const auto results = batch::validate_folder(s.folder, options);
 
   if (s.verbose) {
     fmt::print("\n");
-    for (const auto& r : results) fmt::print("{}\n", io::format_case_details(r));
+    for (const auto& r : results) fmt::print("{}\n", batch::format_case_details(r));
   }
-  fmt::print("{}", io::format_validation_table(results, io::TableStyle::Text));
-  fmt::print("{}", io::format_case_reasons(results, io::TableStyle::Text));
+  fmt::print("{}", batch::format_validation_table(results, batch::TableStyle::Text));
+  fmt::print("{}", batch::format_case_reasons(results, batch::TableStyle::Text));
   if (!s.markdown.empty())
-    io::write_file_atomically(s.markdown, io::format_validation_markdown(results, s.folder));
-  return io::any_failed(results) ? exit_case_failed : exit_ok;
+    format::write_file_atomically(s.markdown, batch::format_validation_markdown(results, s.folder));
+  return batch::any_failed(results) ? exit_case_failed : exit_ok;
 }
 
 }  // namespace

@@ -1,0 +1,330 @@
+// The creep-force table of Vollebregt et al. (VSD 2012): case enumeration, problems, parallel
+// solution and CSV. See creep_table.hpp.
+
+#include "batch/creep_table.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <istream>
+#include <mutex>
+#include <numbers>
+#include <ostream>
+#include <sstream>
+#include <thread>
+
+#include "geometry/hertz.hpp"
+#include "rollcontact/errors.hpp"
+#include "simplified/flexibility.hpp"
+#include "simplified/kalker_coefficients.hpp"
+
+namespace rollcontact::batch {
+
+namespace {
+
+// The parameter grid of the paper (section 4).
+constexpr std::array<double, 5> ellipticities{0.2, 0.5, 1.0, 2.0, 5.0};
+constexpr std::array<double, 5> semi_axes_a{4.0, 6.0, 9.0, 12.0, 20.0};  // [mm], per a/b
+constexpr std::array<double, 4> spins{0.0, 0.5, 1.0, 2.0};
+constexpr std::array<double, 7> angles{-90.0, -60.0, -30.0, 0.0, 30.0, 60.0, 90.0};  // [deg]
+constexpr std::array<double, 23> magnitudes{0.0, 0.1, 0.2, 0.3, 0.4, 0.5,  0.7, 0.9,
+                                            1.1, 1.4, 1.7, 2.0, 2.5, 3.0,  3.5, 4.0,
+                                            5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 12.0};
+static_assert(ellipticities.size() * spins.size() * angles.size() * magnitudes.size() ==
+              table_case_count);
+
+constexpr const char* header =
+    "case,a_over_b,spin,angle_deg,magnitude,fx_rel,fy_rel,mz_rel,slip_percent,converged";
+
+}  // namespace
+
+TableMethod parse_table_method(const std::string& name) {
+  if (name == "exact") return TableMethod::Exact;
+  if (name == "fastsim1") return TableMethod::Fastsim1;
+  if (name == "fastsim3") return TableMethod::Fastsim3;
+  if (name == "fastrip") return TableMethod::FaStrip;
+  throw InputError("--method", 0, "unknown method (exact, fastsim1, fastsim3, fastrip)", name);
+}
+
+std::string table_method_name(TableMethod method) {
+  switch (method) {
+    case TableMethod::Exact:
+      return "exact";
+    case TableMethod::Fastsim1:
+      return "fastsim1";
+    case TableMethod::Fastsim3:
+      return "fastsim3";
+    case TableMethod::FaStrip:
+      return "fastrip";
+  }
+  return "?";
+}
+
+int effective_bound(const TableSettings& s) {
+  if (s.bound >= 0) return s.bound;
+  return s.method == TableMethod::Exact ? 0 : 2;
+}
+
+std::vector<TableCase> table_cases() {
+  std::vector<TableCase> cases;
+  cases.reserve(table_case_count);
+  for (std::size_t ie = 0; ie < ellipticities.size(); ++ie)
+    for (double spin : spins)
+      for (double angle : angles)
+        for (double m : magnitudes) {
+          TableCase tc;
+          tc.number = static_cast<int>(cases.size()) + 1;
+          tc.a_over_b = ellipticities[ie];
+          tc.a = semi_axes_a[ie];
+          tc.b = tc.a / tc.a_over_b;
+          tc.spin = spin;
+          tc.angle_deg = angle;
+          tc.magnitude = m;
+          cases.push_back(tc);
+        }
+  return cases;
+}
+
+TableCreepages table_creepages(const TableCase& tc) {
+  const double estar = table_g / (1.0 - table_nu);
+  const HertzReport hz =
+      geometry::hertz_from_semiaxes(tc.a, tc.b, geometry::HertzLoad::Force, table_fn, estar);
+  TableCreepages cr;
+  cr.rho = hz.rho;
+  cr.c = std::sqrt(tc.a * tc.b);
+  const double theta = tc.angle_deg * std::numbers::pi / 180.0;
+  const double scale = tc.magnitude * table_mu * cr.c / cr.rho;
+  // cos(±90°) is 6e-17, not 0: snap so that pure lateral cases have exactly ξ = 0.
+  const double cs = std::abs(tc.angle_deg) == 90.0 ? 0.0 : std::cos(theta);
+  cr.cksi = scale * cs;
+  cr.ceta = scale * std::sin(theta);
+  cr.cphi = table_mu * tc.spin / cr.rho;
+  return cr;
+}
+
+Problem table_problem(const TableCase& tc, const TableSettings& s) {
+  if (s.mx < 5) throw InputError("--mx", 0, fmt::format("must be at least 5, got {}", s.mx));
+  const TableCreepages cr = table_creepages(tc);
+  Problem p;
+  p.case_number = tc.number;
+  p.digits.p = 2;  // every case on its own: results independent of the order of solution
+  p.digits.b = effective_bound(s);
+  p.digits.t = 3;
+  p.digits.n = 1;
+  p.digits.f = 0;
+  p.digits.o = 0;
+  p.solver.eps = s.eps;
+  p.kinematics.fn = table_fn;
+  p.kinematics.cksi = cr.cksi;
+  p.kinematics.ceta = cr.ceta;
+  p.kinematics.cphi = cr.cphi;
+  p.kinematics.veloc = table_veloc;
+  p.kinematics.chi = 0.0;
+  p.friction.fstat = p.friction.fkin = table_mu;
+  p.materials.poiss1 = p.materials.poiss2 = table_nu;
+  p.materials.gg1 = p.materials.gg2 = table_g;
+  p.potential.ipotcn = -3;
+  p.potential.mx = p.potential.my = s.mx;
+  // mx − 4 elements over each axis of the Hertz ellipse, two free columns/rows on either side.
+  const double scale = static_cast<double>(s.mx) / static_cast<double>(s.mx - 4);
+  p.potential.values = {tc.a, tc.b, scale, 0.0};
+  // Steady rolling on the contact-fixed grid: one element per step.
+  p.kinematics.dq = 2.0 * scale * tc.a / s.mx;
+  switch (s.method) {
+    case TableMethod::Exact:
+      p.digits.m = 0;
+      break;
+    case TableMethod::Fastsim1: {
+      p.digits.m = 2;
+      const auto coef = simplified::kalker_coefficients(tc.a_over_b, table_nu);
+      const auto l = simplified::kalker_flexibilities({tc.a, tc.b}, coef, table_g);
+      // One flexibility for all three creepages: the plain mean of Kalker's L1, L2, L3.
+      p.materials.model_params = {(l.l1 + l.l2 + l.l3) / 3.0, 1.0, 1.0, 1.0};
+      break;
+    }
+    case TableMethod::Fastsim3:
+    case TableMethod::FaStrip:
+      p.digits.m = s.method == TableMethod::Fastsim3 ? 3 : 5;
+      p.materials.model_params = {1.0, 1.0, 1.0, 0.0};  // K0_MF ALFAMF BETAMF: no slope reduction
+      break;
+  }
+  return p;
+}
+
+TableRow solve_table_case(const TableCase& tc, const TableSettings& s, State& state) {
+  TableRow row;
+  row.tc = tc;
+  try {
+    const Problem p = table_problem(tc, s);
+    const Solution sol = solve(p, state);
+    const double mufn = table_mu * sol.totals.fn;
+    const double c = std::sqrt(tc.a * tc.b);
+    row.fx_rel = sol.totals.fx / mufn;
+    row.fy_rel = sol.totals.fy / mufn;
+    row.mz_rel = sol.totals.mz / (mufn * c);
+    row.slip_percent =
+        sol.statistics.ncon > 0 ? 100.0 * sol.statistics.nslip / sol.statistics.ncon : 0.0;
+    row.converged = sol.solver.converged;
+    row.message = sol.solver.message;
+  } catch (const Error& e) {
+    // A failing case must stay visible in the table, not abort the other 3219.
+    row.fx_rel = row.fy_rel = row.mz_rel = row.slip_percent = std::nan("");
+    row.converged = false;
+    row.message = e.what();
+  }
+  return row;
+}
+
+std::vector<TableRow> run_table(std::span<const TableCase> cases, const TableSettings& s,
+                                int threads, const std::function<void(std::size_t)>& progress) {
+  const std::size_t n = cases.size();
+  std::vector<TableRow> rows(n);
+  if (n == 0) return rows;
+  const std::size_t nthreads =
+      std::clamp<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), 1, n);
+  std::atomic<std::size_t> done{0};
+  std::mutex mutex;
+  std::condition_variable cv;
+  std::vector<std::exception_ptr> errors(nthreads);
+  {
+    std::vector<std::jthread> workers;
+    workers.reserve(nthreads);
+    for (std::size_t t = 0; t < nthreads; ++t)
+      workers.emplace_back([&, t] {
+        try {
+          // Round-robin: neighbouring cases (same ellipse, same grid) on different threads,
+          // so every thread keeps its cached influence coefficients for 644 cases in a row.
+          State state;
+          for (std::size_t i = t; i < n; i += nthreads) {
+            rows[i] = solve_table_case(cases[i], s, state);
+            done.fetch_add(1);
+            const std::lock_guard<std::mutex> lock(mutex);
+            cv.notify_one();
+          }
+        } catch (...) {
+          errors[t] = std::current_exception();
+          done.fetch_add(n);  // let the waiting loop end
+          const std::lock_guard<std::mutex> lock(mutex);
+          cv.notify_one();
+        }
+      });
+    std::unique_lock<std::mutex> lock(mutex);
+    while (done.load() < n) {
+      cv.wait_for(lock, std::chrono::milliseconds(200), [&] { return done.load() >= n; });
+      if (progress) {
+        lock.unlock();  // workers must not wait for the console
+        progress(std::min(done.load(), n));
+        lock.lock();
+      }
+    }
+  }
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return rows;
+}
+
+std::vector<int> parse_case_selection(const std::string& text, std::size_t total) {
+  std::vector<int> out;
+  if (text.empty()) {
+    for (std::size_t i = 1; i <= total; ++i) out.push_back(static_cast<int>(i));
+    return out;
+  }
+  auto number = [&](std::string_view item) {
+    int v = 0;
+    const auto r = std::from_chars(item.data(), item.data() + item.size(), v);
+    if (item.empty() || r.ec != std::errc() || r.ptr != item.data() + item.size())
+      throw InputError("--cases", 0, "expected a case number", std::string(item));
+    if (v < 1 || static_cast<std::size_t>(v) > total)
+      throw InputError("--cases", 0, fmt::format("case {} is outside 1..{}", v, total));
+    return v;
+  };
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto dash = item.find('-');
+    if (dash == std::string::npos) {
+      out.push_back(number(item));
+    } else {
+      const std::string_view view(item);
+      const int lo = number(view.substr(0, dash)), hi = number(view.substr(dash + 1));
+      if (hi < lo) throw InputError("--cases", 0, "empty range", item);
+      for (int v = lo; v <= hi; ++v) out.push_back(v);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::string table_csv_header() {
+  return header;
+}
+
+void write_table_csv(std::ostream& out, std::span<const TableRow> rows) {
+  out << header << '\n';
+  for (const TableRow& r : rows)
+    out << fmt::format("{},{:g},{:g},{:g},{:g},{:.8g},{:.8g},{:.8g},{:.4f},{}\n", r.tc.number,
+                       r.tc.a_over_b, r.tc.spin, r.tc.angle_deg, r.tc.magnitude, r.fx_rel, r.fy_rel,
+                       r.mz_rel, r.slip_percent, r.converged ? 1 : 0);
+}
+
+std::vector<TableRow> read_table_csv(std::istream& in, const std::string& name) {
+  std::string line;
+  if (!std::getline(in, line)) throw InputError(name, 0, "empty file");
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  const std::string required(header, std::string_view(header).rfind(','));
+  bool with_converged = false;
+  if (line == header)
+    with_converged = true;
+  else if (line != required)
+    throw InputError(name, 1, "expected the header '" + required + "[,converged]'");
+  std::vector<TableRow> rows;
+  int lineno = 1;
+  const std::size_t ncol = with_converged ? 10 : 9;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    std::vector<std::string_view> f;
+    std::string_view rest(line);
+    for (;;) {
+      const auto comma = rest.find(',');
+      f.push_back(rest.substr(0, comma));
+      if (comma == std::string_view::npos) break;
+      rest.remove_prefix(comma + 1);
+    }
+    if (f.size() != ncol)
+      throw InputError(name, lineno, fmt::format("expected {} values, found {}", ncol, f.size()));
+    std::array<double, 9> v{};
+    for (std::size_t k = 0; k < 9; ++k) {
+      const auto r = std::from_chars(f[k].data(), f[k].data() + f[k].size(), v[k]);
+      if (f[k].empty() || r.ec != std::errc() || r.ptr != f[k].data() + f[k].size())
+        throw InputError(name, lineno, "expected a number", std::string(f[k]));
+    }
+    TableRow row;
+    row.tc.number = static_cast<int>(v[0]);
+    row.tc.a_over_b = v[1];
+    row.tc.spin = v[2];
+    row.tc.angle_deg = v[3];
+    row.tc.magnitude = v[4];
+    row.fx_rel = v[5];
+    row.fy_rel = v[6];
+    row.mz_rel = v[7];
+    row.slip_percent = v[8];
+    if (with_converged) {
+      if (f[9] != "0" && f[9] != "1")
+        throw InputError(name, lineno, "converged must be 0 or 1", std::string(f[9]));
+      row.converged = f[9] == "1";
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace rollcontact::batch

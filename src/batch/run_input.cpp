@@ -1,0 +1,120 @@
+#include "batch/run_input.hpp"
+
+#include <fmt/format.h>
+
+#include <map>
+#include <sstream>
+#include <variant>
+
+#include "format/inp/inp_reader.hpp"
+#include "format/report/json_writer.hpp"
+#include "format/report/mat_writer.hpp"
+#include "format/report/report_writer.hpp"
+#include "format/report/subs_writer.hpp"
+#include "format/text/atomic_file.hpp"
+#include "format/toml/toml_case_reader.hpp"
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::batch {
+
+RunResult run_problems(const std::vector<Problem>& problems, const std::string& input_name,
+                       const std::filesystem::path& output_stem, const RunOptions& options) {
+  RunResult result;
+  std::ostringstream report;
+  format::write_report_banner(report);
+  nlohmann::json cases = nlohmann::json::array();
+  std::map<int, State> states;  // one State per result element (REID)
+
+  for (std::size_t k = 0; k < problems.size(); ++k) {
+    const Problem& problem = problems[k];
+    CaseOutcome outcome;
+    outcome.problem = problem;
+    if (problem.digits.r == 2 || problem.digits.r == 3) {
+      outcome.skipped = true;
+    } else {
+      auto [it, inserted] = states.try_emplace(problem.result_element, options.solve);
+      try {
+        if (!problem.source.case_error.empty()) throw ProblemError(problem.source.case_error);
+        outcome.solution = solve(problem, it->second);
+        outcome.solved = true;
+        // The reader's consistency overrides are part of what the user must see for this case.
+        auto& warnings = outcome.solution.warnings;
+        warnings.insert(warnings.begin(), problem.source.warnings.begin(),
+                        problem.source.warnings.end());
+        if (!outcome.solution.solver.converged) ++result.failed;
+      } catch (const NotSupportedError& e) {
+        outcome.error = e.what();
+      } catch (const ProblemError& e) {
+        outcome.error = e.what();
+      }
+      if (!outcome.error.empty()) {
+        ++result.failed;
+        const SourceInfo& src = problem.source;
+        if (!src.file.empty())
+          outcome.error = src.file + ":" + std::to_string(src.first_line) + ": " + outcome.error;
+      }
+    }
+    if (outcome.solved) {
+      format::write_case_report(report, problem, outcome.solution);
+      format::write_subs_file(output_stem, problem, outcome.solution);
+      if (problem.digits.a >= 1) format::write_mat_file(output_stem, problem, outcome.solution);
+      cases.push_back(format::case_to_json(problem, outcome.solution));
+    } else if (!outcome.skipped) {
+      format::write_case_error(report, problem, outcome.error);
+      cases.push_back(format::case_error_to_json(problem, outcome.error));
+    }
+    if (options.on_case) options.on_case(outcome, k, problems.size());
+    result.cases.push_back(std::move(outcome));
+  }
+  format::write_report_end(report);
+
+  result.report_path = output_stem;
+  result.report_path += ".out";
+  result.json_path = output_stem;
+  result.json_path += ".json";
+  format::write_file_atomically(result.report_path, report.str());
+  format::write_file_atomically(
+      result.json_path, format::results_document(input_name, std::move(cases)).dump(2) + "\n");
+  return result;
+}
+
+namespace {
+
+/// Stand-in for a module-1 case until the wheel/rail solver exists: identity, digits and source
+/// of the case, with a per-case error so that the run reports it and continues.
+Problem not_supported_stand_in(const WheelRailProblem& wr) {
+  Problem p;
+  p.case_number = wr.case_number;
+  p.result_element = wr.result_element;
+  p.digits = wr.digits;
+  p.source = wr.source;
+  p.source.case_error = fmt::format("not supported yet: module 1 wheel/rail solver (C1={}, D={})",
+                                    wr.config, wr.discretisation.method);
+  return p;
+}
+
+std::vector<Problem> read_problems(const std::filesystem::path& input) {
+  // TOML case files (docs/case-files.md) by extension; everything else is CONTACT .inp.
+  if (input.extension() == ".toml") return format::read_toml_file(input);
+  std::vector<Problem> problems;
+  for (format::InputCase& c : format::read_input_cases(input)) {
+    if (auto* p = std::get_if<Problem>(&c)) {
+      problems.push_back(std::move(*p));
+    } else {
+      problems.push_back(not_supported_stand_in(std::get<WheelRailProblem>(c)));
+    }
+  }
+  return problems;
+}
+
+}  // namespace
+
+RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
+  const std::vector<Problem> problems = read_problems(input);
+  std::filesystem::path dir = options.output_dir.empty() ? input.parent_path() : options.output_dir;
+  if (!options.output_dir.empty()) std::filesystem::create_directories(dir);
+  const std::filesystem::path stem = dir / input.stem();
+  return run_problems(problems, input.filename().string(), stem, options);
+}
+
+}  // namespace rollcontact::batch

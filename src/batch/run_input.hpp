@@ -1,0 +1,46 @@
+#pragma once
+// Runs every case of an input file and writes the report and JSON (the `rollcontact run` job).
+
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "rollcontact/problem.hpp"
+#include "rollcontact/solution.hpp"
+#include "rollcontact/solve.hpp"
+
+namespace rollcontact::batch {
+
+/// Result of one case of a run.
+struct CaseOutcome {
+  Problem problem;
+  bool solved = false;   ///< a Solution exists
+  Solution solution;     ///< valid when solved
+  std::string error;     ///< non-empty for "error" (not supported, inadmissible data)
+  bool skipped = false;  ///< R = 2, 3: read but not solved
+};
+
+struct RunOptions {
+  std::filesystem::path output_dir;  ///< empty: next to the input
+  SolveOptions solve;
+  /// Called after each case (progress); may be empty.
+  std::function<void(const CaseOutcome&, std::size_t index, std::size_t count)> on_case;
+};
+
+struct RunResult {
+  std::vector<CaseOutcome> cases;
+  std::filesystem::path report_path, json_path;
+  int failed = 0;  ///< errors + not converged
+};
+
+/// Reads `input`, solves each case in order (one State per result element), writes
+/// <name>.out and <name>.json atomically. Throws InputError (nothing written) for bad input.
+RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options);
+
+/// Same for problems already read; `input_name` names the outputs.
+RunResult run_problems(const std::vector<Problem>& problems, const std::string& input_name,
+                       const std::filesystem::path& output_stem, const RunOptions& options);
+
+}  // namespace rollcontact::batch

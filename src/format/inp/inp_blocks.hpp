@@ -1,0 +1,67 @@
+#pragma once
+// Input blocks shared by module 1 (wheel/rail) and module 3 (basic contact): iteration
+// parameters, friction-law lines, the material block, damping, heat and subsurface points
+// (spec/inp-format.md §4, §4.1, §6). Each function reads its lines, validates ranges and
+// stores the values; "keep" semantics are the caller's business.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "format/text/inp_stream.hpp"
+#include "rollcontact/problem.hpp"
+
+namespace rollcontact::format {
+
+/// Iteration line `MAXGS MAXIN MAXNR MAXOUT EPS {NPOT_MAX}` and the G-specific line (G=2,3,4,5).
+/// Resets the G-specific parameters to their defaults first; sets solver.method = g. Returns
+/// NPOT_MAX when given (module 1 uses it, module 3 ignores it).
+std::optional<int> read_solver_lines(InpStream& in, int g, SolverSettings& solver);
+
+/// Coulomb friction (L=0) needs FSTAT = FKIN within 0.1 % and FKIN ≥ 1e-4; sets FSTAT := FKIN.
+/// `line_fstat`/`line_fkin` are the lines of the two values for the messages.
+void check_coulomb_values(InpStream& in, FrictionValues& fv, int line_fstat, int line_fkin);
+
+/// Consistency rules of inp-format.md §3.2 that modules 1 and 3 share: in the first case of a
+/// result element P and I are overridden (message to `warnings`) and L=1, D=0/1 are errors
+/// (`kept_grid` names what D keeps, `keep_grid_hint` ends the message); S=1,2 need stored
+/// subsurface points; L=1 may not
+/// keep the friction while V changes (`previous_v` of the last case, ignored in a first case).
+/// `line2`/`line1` are the lines of control words 2 and 1 for the messages.
+void apply_shared_digit_rules(InpStream& in, ControlDigits& d, bool first, int previous_v,
+                              bool has_subsurface, const std::string& element, int line1, int line2,
+                              std::string_view kept_grid, std::string_view keep_grid_hint,
+                              std::vector<std::string>& warnings);
+
+/// True for the friction laws followed by a `MEMDST MEM_S0` line (L=2,3,4,6).
+constexpr bool friction_law_has_memory(int law) {
+  return law == 2 || law == 3 || law == 4 || law == 6;
+}
+
+/// One friction-law line of §4.1 for law 0, 2, 3, 4 or 6 (no V=1/2 prefix); `what` names it in
+/// messages. Checks FSTAT = FKIN (0.1 %) and FKIN >= 1e-4 for L=0, FKIN >= 0 for L=2..4.
+FrictionValues read_friction_values(InpStream& in, int law, std::string_view what);
+
+/// The `MEMDST MEM_S0` line.
+void read_friction_memory(InpStream& in, Friction& friction);
+
+/// Copies one set of values into the scalar members of `friction`.
+void assign_friction_values(const FrictionValues& values, Friction& friction);
+
+/// Material block: `POISS1 POISS2 GG1 GG2`, then `FLXZ` (b=1) and the M-specific line (m=1..5).
+/// Checks POISS in [0, 0.5] and GG >= 1e-5. M=4: TAU_C0 >= 1e10 is stored as 0.
+void read_material_block(InpStream& in, int b, int m, Materials& materials);
+
+/// Damping line `CDAMPN CDAMPT DFNMAX DFTMAX` (M2=2); enables damping.
+void read_damping_line(InpStream& in, Damping& damping);
+
+/// Heat lines for both bodies (H=3), then `BETAPL` when `with_betapl` (M=4).
+void read_heat_lines(InpStream& in, bool with_betapl, HeatParameters& heat);
+
+/// Subsurface block (S>=2): `MATFIL_S OUTPUT_S` (clamped to 0..2, 0..4 with a warning), and for
+/// s=3 the list of ISUBS blocks that replaces the stored one. Warnings are appended.
+void read_subsurface_block(InpStream& in, int s, Subsurface& subsurface,
+                           std::vector<std::string>& warnings);
+
+}  // namespace rollcontact::format

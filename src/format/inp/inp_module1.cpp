@@ -1,0 +1,657 @@
+#include "format/inp/inp_module1.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <initializer_list>
+#include <numbers>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "format/inp/inp_blocks.hpp"
+#include "format/inp/inp_control.hpp"
+#include "format/profiles/profile_points.hpp"
+#include "format/profiles/profile_reader.hpp"
+#include "format/profiles/profile_slices.hpp"
+#include "format/text/inp_checks.hpp"
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::format {
+
+namespace {
+
+constexpr FieldKind kInt = FieldKind::integer;
+constexpr FieldKind kReal = FieldKind::real;
+constexpr FieldKind kAngle = FieldKind::angle;
+
+constexpr double kMinElementSize = 1e-8;              // DX, DS [mm]
+constexpr double kMinChord = 5.0, kMaxChord = 500.0;  // profile length [mm]
+constexpr int kMaxFrictionSets = 10;                  // NVF
+constexpr int kDefaultNpotMax = 20000;
+
+/// Checks that `value` is one of `allowed`; message "digit NAME=v is not a valid value (...)".
+void check_digit(const InpStream& in, int line, std::string_view name, int value,
+                 std::initializer_list<int> allowed, std::string_view allowed_text) {
+  if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
+    in.fail(line, fmt::format("digit {}={} is not a valid value ({})", name, value, allowed_text));
+  }
+}
+
+/// Reads one control word and checks that it is non-negative with at most `max_digits` digits.
+GroupValues read_word(InpStream& in, std::string_view name, int max_digits,
+                      std::string_view second_name = {}) {
+  const GroupValues g =
+      second_name.empty()
+          ? in.read_group({{name, kInt}}, "the control words")
+          : in.read_group({{name, kInt}, {second_name, kInt, true}}, "the control words");
+  const int value = g.integer(0);
+  if (value < 0) {
+    in.fail(g.line(0), fmt::format("{} must be a non-negative integer", name),
+            std::to_string(value));
+  }
+  long long limit = 1;
+  for (int k = 0; k < max_digits; ++k) limit *= 10;
+  if (value >= limit) {
+    in.fail(g.line(0), fmt::format("{} has more than {} digits", name, max_digits),
+            std::to_string(value));
+  }
+  return g;
+}
+
+/// Control words of a module-1 case (spec §3): CPBTNFS, VLDCMZE {10*GAPWGT+M2}, XHGIAOWR and
+/// PSFLCIN {READLN} when X=1. Returns the digits, C1 and the lines of the words.
+struct Module1Words {
+  ControlDigits digits;
+  int config = 0;
+  std::array<int, 4> lines{};
+};
+
+Module1Words read_control_words_module1(InpStream& in) {
+  Module1Words out;
+  ControlDigits& d = out.digits;
+
+  const GroupValues w1 = read_word(in, "control word 1 (CPBTNFS)", 7);
+  const int v1 = w1.integer(0);
+  const int l1 = out.lines[0] = w1.line(0);
+  out.config = digit_of(v1, 6);
+  d.p = digit_of(v1, 5);
+  d.b = digit_of(v1, 4);
+  d.t = digit_of(v1, 3);
+  d.n = digit_of(v1, 2);
+  d.f = digit_of(v1, 1);
+  d.s = digit_of(v1, 0);
+  check_digit(in, l1, "C1", out.config, {0, 1, 4, 5}, "0, 1, 4, 5");
+  check_digit(in, l1, "P", d.p, {0, 1, 2, 3}, "0..3");
+  check_digit(in, l1, "B", d.b, {0, 1, 5, 6}, "0, 1, 5, 6");
+  check_digit(in, l1, "T", d.t, {0, 1, 2, 3}, "0..3");
+  check_digit(in, l1, "N", d.n, {0, 1}, "0, 1");
+  check_digit(in, l1, "F", d.f, {0, 1, 3}, "0, 1, 3");
+  check_digit(in, l1, "S", d.s, {0, 1, 2, 3}, "0..3");
+
+  const GroupValues w2 = read_word(in, "control word 2 (VLDCMZE)", 7, "M2");
+  const int v2 = w2.integer(0);
+  const int l2 = out.lines[1] = w2.line(0);
+  d.v = digit_of(v2, 6);
+  d.l = digit_of(v2, 5);
+  d.d = digit_of(v2, 4);
+  d.c = digit_of(v2, 3);
+  d.m = digit_of(v2, 2);
+  d.z = digit_of(v2, 1);
+  d.e = digit_of(v2, 0);
+  check_digit(in, l2, "V", d.v, {0, 1, 2}, "0, 1, 2");
+  if (d.l == 5) {
+    in.fail(l2,
+            "digit L=5 (Polach friction) is only available through the library interface, not in "
+            ".inp files");
+  }
+  check_digit(in, l2, "L", d.l, {0, 1, 2, 3, 4, 6}, "0, 1, 2, 3, 4, 6");
+  check_digit(in, l2, "C", d.c, {0, 1, 2, 3, 4}, "0..4");
+  check_digit(in, l2, "Z", d.z, {0, 1, 2, 3}, "0..3");
+  d.m2 = 1;
+  d.gapwgt = 0;
+  if (w2.has(1)) {
+    const int second = w2.integer(1);
+    if (second < 0 || second > 12 || second % 10 > 2) {
+      in.fail(l2,
+              "second integer of control word 2 (10*GAPWGT + M2) must have GAPWGT 0..1 and M2 "
+              "0..2",
+              std::to_string(second));
+    }
+    d.m2 = second % 10;
+    d.gapwgt = second / 10;
+  }
+
+  const GroupValues w3 = read_word(in, "control word 3 (XHGIAOWR)", 8);
+  const int v3 = w3.integer(0);
+  const int l3 = out.lines[2] = w3.line(0);
+  decode_word3(v3, d);
+  check_digit(in, l3, "X", d.x, {0, 1}, "0, 1");
+  check_digit(in, l3, "H", d.h, {0, 1, 3}, "0, 1, 3");
+  check_digit(in, l3, "G", d.g, {0, 1, 2, 3, 4, 5}, "0..5");
+  check_digit(in, l3, "A", d.a, {0, 1, 2}, "0..2");
+  check_digit(in, l3, "O", d.o, {0, 1, 2, 3, 4, 5}, "0..5");
+
+  d.debug = DebugDigits{};
+  if (d.x == 1) {
+    const GroupValues w4 = read_word(in, "control word 4 (PSFLCIN)", 7, "READLN");
+    out.lines[3] = w4.line(0);
+    d.debug = decode_debug_word(w4);
+  }
+  return out;
+}
+
+/// Names of the law values after the V=1,2 prefix (spec §4.1).
+std::vector<std::string_view> friction_value_names(int law) {
+  switch (law) {
+    case 0:
+      return {"FSTAT", "FKIN"};
+    case 2:
+      return {"FKIN", "FLIN1", "SABSH1", "FLIN2", "SABSH2"};
+    case 3:
+      return {"FKIN", "FRAT1", "SABSH1", "FRAT2", "SABSH2"};
+    case 4:
+      return {"FKIN", "FEXP1", "SABSH1", "FEXP2", "SABSH2"};
+    default:
+      return {"FREF", "TREF", "DFHEAT", "DTHEAT"};
+  }
+}
+
+/// One V=1,2 friction line `ALPHA|SVF <law values>`: the prefix and the law values, checked as
+/// read_friction_values() checks an unprefixed line.
+std::pair<double, FrictionValues> read_prefixed_friction(InpStream& in, int v, int law, int k) {
+  const std::vector<std::string_view> names = friction_value_names(law);
+  const std::string what = fmt::format("friction set {} (V={}: {} {})", k, v,
+                                       v == 1 ? "ALPHA" : "SVF", fmt::join(names, " "));
+  const FieldSpec prefix{v == 1 ? "ALPHA" : "SVF", v == 1 ? kAngle : kReal};
+  const GroupValues g = names.size() == 2
+                            ? in.read_group({prefix, {names[0], kReal}, {names[1], kReal}}, what)
+                        : names.size() == 4 ? in.read_group({prefix,
+                                                             {names[0], kReal},
+                                                             {names[1], kReal},
+                                                             {names[2], kReal},
+                                                             {names[3], kReal}},
+                                                            what)
+                                            : in.read_group({prefix,
+                                                             {names[0], kReal},
+                                                             {names[1], kReal},
+                                                             {names[2], kReal},
+                                                             {names[3], kReal},
+                                                             {names[4], kReal}},
+                                                            what);
+  FrictionValues fv;
+  if (law == 0) {
+    fv.fstat = g.real(1);
+    fv.fkin = g.real(2);
+    check_coulomb_values(in, fv, g.line(1), g.line(2));
+  } else if (law == 6) {
+    fv.fkin = g.real(1);
+    fv.fstat = fv.fkin;
+    fv.params = {g.real(2), g.real(3), g.real(4), 0.0};
+  } else {
+    fv.fkin = g.real(1);
+    fv.params = {g.real(2), g.real(3), g.real(4), g.real(5)};
+    fv.fstat = fv.fkin + fv.params[0] + fv.params[2];
+    require_at_least(in, g.line(1), "FKIN", fv.fkin, 0.0);
+  }
+  return {g.real(0), fv};
+}
+
+/// NPOT_MAX of the iteration line, clamped to 100..1e6 (default when absent).
+int clamp_npot_max(std::optional<int> given, std::vector<std::string>& warnings) {
+  if (!given) return kDefaultNpotMax;
+  const int npot = std::clamp(*given, 100, 1000000);
+  if (npot != *given) warnings.push_back(fmt::format("NPOT_MAX = {} clamped to {}", *given, npot));
+  return npot;
+}
+
+bool is_slices_extension(const std::filesystem::path& p, bool wheel) {
+  std::string ext = p.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == (wheel ? ".slcw" : ".slcs");
+}
+
+}  // namespace
+
+WheelRailProblem Module1Reader::read_case(InpStream& in, int reid, int module_line,
+                                          int case_number) {
+  Stored& st = stored_[reid];
+  const bool first = !st.has_case;
+  WheelRailProblem p = first ? WheelRailProblem{} : st.last;
+  p.case_number = case_number;
+  p.result_element = reid;
+  p.source = SourceInfo{};
+  p.source.file = in.file();
+  p.source.module_line = module_line;
+  auto warn = [&p](std::string text) { p.source.warnings.push_back(std::move(text)); };
+  const std::string element = fmt::format("result element {}", reid);
+
+  // ---- lines 1-4: control words ----
+  const Module1Words cw = read_control_words_module1(in);
+  const ControlDigits previous_digits = p.digits;
+  p.digits = cw.digits;
+  p.config = cw.config;
+  p.source.digit_lines = cw.lines;
+  p.source.first_line = cw.lines[0];
+  ControlDigits& d = p.digits;
+  const int l1 = cw.lines[0];
+  const int l2 = cw.lines[1];
+  const int l3 = cw.lines[2];
+
+  // ---- consistency rules that depend on the digits only (§3.2) ----
+  apply_shared_digit_rules(in, d, first, previous_digits.v, st.has_subsurface, element, l1, l2,
+                           "discretisation", "no discretisation is stored yet, use D=2..9",
+                           p.source.warnings);
+  if (!first && (previous_digits.t >= 2) != (d.t >= 2) && d.c == 0) {
+    in.fail(l2, fmt::format("switching from T={} to T={} (rolling <-> non-rolling) requires C≠0",
+                            previous_digits.t, d.t));
+  }
+  if (!first && d.e == 0 && d.n != previous_digits.n) {
+    in.fail(l2, fmt::format("E=0 (keep wheelset) while N changes from {} to {}: the vertical "
+                            "position/force line must be read (use E≥1)",
+                            previous_digits.n, d.n));
+  }
+  if (d.f == 1 && d.n != 1) in.fail(l1, "F=1 (prescribed FX_WS) requires N=1");
+  if (d.c == 0) {
+    warn("C=0 overridden to 1 (influence coefficients are recomputed when needed)");
+    d.c = 1;
+  }
+  if (d.c == 1 && !st.has_materials) {
+    in.fail(l2, fmt::format("C=1 keeps the materials, but no material block was read for {} "
+                            "(use C=2, 3 or 4)",
+                            element));
+  }
+  if (d.m == 1 && d.t != 3)
+    in.fail(l2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
+  if (d.h >= 1 && d.t != 3)
+    in.fail(l3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
+  if (d.h == 1 && !st.has_heat) {
+    in.fail(l3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use H=3)",
+                            element));
+  }
+  if ((d.z == 0 || d.z == 1 || d.z == 2) && !st.has_rail) {
+    in.fail(l2, fmt::format("Z={} keeps the rail profile, but none was read for {} (use Z=3)", d.z,
+                            element));
+  }
+  if ((d.e == 0 || d.e == 1 || d.e == 2 || d.e == 4) && !st.has_wheel) {
+    in.fail(l2, fmt::format("E={} keeps the wheel profile, but none was read for {} (use E=3 or 5)",
+                            d.e, element));
+  }
+
+  // ---- lines 5-6: iteration parameters (G=1 keeps them) ----
+  if (d.g != 1) {
+    p.npot_max = clamp_npot_max(read_solver_lines(in, d.g, p.solver), p.source.warnings);
+  }
+
+  // ---- lines 7-8: friction (L=1 keeps it) ----
+  if (d.l != 1) {
+    p.friction.law = d.l;
+    p.friction.rows.clear();
+    p.variable_friction = VariableFriction{};
+    p.variable_friction.v = d.v;
+    if (d.v == 0) {
+      const FrictionValues fv =
+          read_friction_values(in, d.l,
+                               fmt::format("the friction line (L={}: {})", d.l,
+                                           fmt::join(friction_value_names(d.l), " ")));
+      assign_friction_values(fv, p.friction);
+    } else {
+      const GroupValues g = in.read_group({{"NVF", kInt}}, "the friction variation line (NVF)");
+      require_int_range(in, g.line(0), "NVF", g.integer(0), 1, kMaxFrictionSets);
+      auto& vf = p.variable_friction;
+      for (int k = 1; k <= g.integer(0); ++k) {
+        const auto [position, values] = read_prefixed_friction(in, d.v, d.l, k);
+        if (!vf.positions.empty() && !(position > vf.positions.back())) {
+          in.fail(in.last_line(),
+                  fmt::format("friction control points must be strictly increasing: {} = {} "
+                              "follows {}",
+                              d.v == 1 ? "ALPHA" : "SVF", position, vf.positions.back()));
+        }
+        vf.positions.push_back(position);
+        vf.sets.push_back(values);
+      }
+      assign_friction_values(vf.sets.front(), p.friction);
+    }
+    if (friction_law_has_memory(d.l)) read_friction_memory(in, p.friction);
+  }
+  const int law = p.friction.law;
+  if (law == 6 && d.h == 0) in.fail(l2, "L=6 (temperature-dependent friction) requires H≥1");
+  if (law == 6 && (d.m == 2 || d.m == 3 || d.m == 5 || d.m == 6 || d.m == 7)) {
+    in.fail(l2, fmt::format("L=6 (temperature-dependent friction) is not allowed with M={}", d.m));
+  }
+
+  // ---- line 9: conformal correction method (C=4, no inclination table in module 1) ----
+  if (d.c == 4) {
+    const GroupValues g =
+        in.read_group({{"IF_METH", kInt}, {"VARIANT", kInt}}, "the C=4 line (IF_METH VARIANT)");
+    require_int_range(in, g.line(0), "IF_METH", g.integer(0), 0, 1);
+    require_int_range(in, g.line(1), "VARIANT", g.integer(1), 1, 4);
+    p.materials.conformal = {};
+    p.materials.conformal.if_meth = g.integer(0);
+    p.materials.conformal.variant = g.integer(1);
+  }
+
+  // ---- line 10: material block (body 1 = rail, body 2 = wheel) ----
+  if (d.c >= 2) {
+    read_material_block(in, d.b, d.m, p.materials);
+    p.materials.influence_type = d.c;
+    st.has_materials = true;
+  }
+
+  // ---- line 11: damping ----
+  if (d.m2 == 0) p.damping.enabled = false;
+  if (d.m2 == 2) read_damping_line(in, p.damping);
+
+  // ---- line 12: heat ----
+  if (d.h == 3) {
+    read_heat_lines(in, d.m == 4, p.heat);
+    st.has_heat = true;
+  }
+
+  // ---- line 13: discretisation ----
+  if (d.d >= 2) {
+    const GroupValues g = in.read_group({{"DX", kReal},
+                                         {"DS", kReal},
+                                         {"DQREL", kReal},
+                                         {"A_SEP", kAngle},
+                                         {"D_SEP", kReal},
+                                         {"D_COMB", kReal},
+                                         {"D_TURN", kReal, true},
+                                         {"G_MISS", kReal, true}},
+                                        "the discretisation line (DX DS DQREL A_SEP D_SEP D_COMB)");
+    WheelRailDiscretisation ds;
+    ds.method = d.d;
+    ds.dx = g.real(0);
+    ds.ds = g.real(1);
+    ds.dqrel = g.real(2);
+    if (!(ds.dx >= kMinElementSize)) {
+      in.fail(g.line(0), fmt::format("DX = {} must be at least 1e-8", ds.dx));
+    }
+    if (!(ds.ds >= kMinElementSize)) {
+      in.fail(g.line(1), fmt::format("DS = {} must be at least 1e-8", ds.ds));
+    }
+    require_real_range(in, g.line(2), "DQREL", ds.dqrel, 5e-7, 10.0);
+    ds.a_sep = std::max(0.0, g.real(3));
+    ds.d_sep = std::max(0.0, g.real(4));
+    ds.d_comb = g.real(5);
+    if (!(ds.d_sep >= ds.d_comb)) {
+      in.fail(g.line(5),
+              fmt::format("D_SEP = {} must be at least D_COMB = {}", ds.d_sep, ds.d_comb));
+    }
+    ds.d_turn = g.has(6) ? g.real(6) : 2.0 * ds.d_sep - ds.d_comb;
+    ds.g_miss = g.has(7) ? g.real(7) : -1.0;
+    if (!first && (d.t == 1 || d.t == 2) && st.has_discretisation &&
+        (std::abs(ds.dx - p.discretisation.dx) > 1e-6 * p.discretisation.dx ||
+         std::abs(ds.ds - p.discretisation.ds) > 1e-6 * p.discretisation.ds)) {
+      in.fail(
+          g.line(0),
+          fmt::format("transient rolling (T={}): DX, DS = {}, {} must equal the previous {}, {}",
+                      d.t, ds.dx, ds.ds, p.discretisation.dx, p.discretisation.ds));
+    }
+    p.discretisation = ds;
+    st.has_discretisation = true;
+  }
+
+  // ---- lines 14-17: track ----
+  double gaught_for_slices = p.track.gaught;
+  if (d.z == 1 || d.z == 3) {
+    const bool roller = p.is_roller();
+    const GroupValues g = in.read_group({{"GAUGHT", kReal},
+                                         {"G2", kReal},
+                                         {"G3", kReal},
+                                         {roller ? "NOMRADR" : "CANT", roller ? kReal : kAngle},
+                                         {"CURV", kReal, true}},
+                                        roller ? "the track line (GAUGHT G2 G3 NOMRADR {CURV})"
+                                               : "the track line (GAUGHT G2 G3 CANT {CURV})");
+    TrackDimensions& tr = p.track;
+    tr = TrackDimensions{};
+    tr.gaught = g.real(0);
+    if (tr.gaught > 0.0) {
+      tr.gaugsq = g.real(1);
+      tr.gaugwd = g.real(2);
+    } else {
+      tr.raily0 = g.real(1);
+      tr.railz0 = g.real(2);
+    }
+    if (roller) {
+      tr.nomradr = g.real(3);
+      require_positive(in, g.line(3), "NOMRADR", tr.nomradr);
+    } else {
+      tr.cant = g.real(3);
+    }
+    tr.curv = g.has(4) ? g.real(4) : 0.0;
+    gaught_for_slices = tr.gaught;
+  }
+  if (d.z == 3) {
+    p.rail = read_profile_line(in, /*is_wheel=*/false, gaught_for_slices, p.source.warnings);
+    st.has_rail = true;
+  }
+  if (d.z == 2 || d.z == 3) {
+    const GroupValues g = in.read_group({{"DYRAIL", kReal},
+                                         {"DZRAIL", kReal},
+                                         {"DROLLR", kAngle},
+                                         {"VYRAIL", kReal},
+                                         {"VZRAIL", kReal},
+                                         {"VROLLR", kAngle}},
+                                        "the rail deviations line (DYRAIL DZRAIL DROLLR VYRAIL "
+                                        "VZRAIL VROLLR)");
+    p.rail_deviations = {g.real(0), g.real(1), g.real(2), g.real(3), g.real(4), g.real(5)};
+    if (d.f == 3) {
+      const GroupValues m = in.read_group({{"KYRAIL", kReal},
+                                           {"FYRAIL", kReal},
+                                           {"KZRAIL", kReal},
+                                           {"FZRAIL", kReal},
+                                           {"DYSTEP0", kReal, true}},
+                                          "the massless rail line (KYRAIL FYRAIL KZRAIL FZRAIL)");
+      p.massless_rail = {m.real(0), m.real(1), m.real(2), m.real(3), m.has(4) ? m.real(4) : 1.0};
+      p.has_massless_rail = true;
+    }
+  }
+  if (d.f == 3 && !p.has_massless_rail) {
+    in.fail(l1, "F=3 (massless rail) needs the rail stiffness line: use Z=2 or 3");
+  }
+
+  // ---- lines 18-22: wheelset ----
+  if (d.e == 3 || d.e == 5) {
+    const GroupValues g = in.read_group(
+        {{"FBDIST", kReal}, {"FBPOS", kReal}, {"NOMRADW", kReal}, {"YTAPE", kReal, true}},
+        "the wheelset line (FBDIST FBPOS NOMRADW {YTAPE})");
+    p.wheelset = {g.real(0), g.real(1), g.real(2), g.has(3) ? g.real(3) : 1000.0};
+    require_at_least(in, g.line(2), "NOMRADW", p.wheelset.nomradw, 1e-3);
+    p.wheel = read_profile_line(in, /*is_wheel=*/true, gaught_for_slices, p.source.warnings);
+    st.has_wheel = true;
+  }
+  WheelsetMotion& mo = p.motion;
+  if (d.e >= 1) {
+    const bool roller = p.is_roller();
+    const std::string_view p1 = roller ? "X_WS" : "S_WS";
+    const std::string_view p3 = d.n == 0 ? "Z_WS" : "FZ";
+    const GroupValues g = in.read_group(
+        {{p1, kReal},
+         {"Y_WS", kReal},
+         {p3, kReal},
+         {"ROLL", kAngle},
+         {"YAW", kAngle},
+         {"PITCH", kAngle}},
+        fmt::format("the wheelset position line ({} Y_WS {} ROLL YAW PITCH)", p1, p3));
+    mo.s = g.real(0);
+    mo.y = g.real(1);
+    if (d.n == 0) {
+      mo.z = g.real(2);
+    } else {
+      mo.fz = g.real(2);
+      if (!(mo.fz > 0.0)) in.fail(g.line(2), fmt::format("FZ = {} must be positive (N=1)", mo.fz));
+    }
+    mo.roll = g.real(3);
+    mo.yaw = g.real(4);
+    mo.pitch = g.real(5);
+    st.has_position = true;
+  }
+  if (d.e >= 2) {
+    const bool roller = p.is_roller();
+    const std::string_view q1 = roller ? "RPITCH" : "VS";
+    const std::string_view q6 = d.f == 1 ? "FX_WS" : "VPITCH";
+    const GroupValues g =
+        in.read_group({{q1, roller ? kAngle : kReal},
+                       {"VY", kReal},
+                       {"VZ", kReal},
+                       {"VROLL", kAngle},
+                       {"VYAW", kAngle},
+                       {q6, d.f == 1 ? kReal : kAngle}},
+                      fmt::format("the wheelset velocity line ({} VY VZ VROLL VYAW {})", q1, q6));
+    (roller ? mo.rpitch : mo.vs) = g.real(0);
+    mo.vy = g.real(1);
+    mo.vz = g.real(2);
+    mo.vroll = g.real(3);
+    mo.vyaw = g.real(4);
+    (d.f == 1 ? mo.fx : mo.vpitch) = g.real(5);
+  }
+  if (d.e == 4 || d.e == 5) {
+    const GroupValues g1 = in.read_group({{"DXWHL", kReal},
+                                          {"DYWHL", kReal},
+                                          {"DZWHL", kReal},
+                                          {"DROLLW", kAngle},
+                                          {"DYAWW", kAngle},
+                                          {"DPITCHW", kAngle}},
+                                         "the flexible wheel line (DXWHL DYWHL DZWHL DROLLW DYAWW "
+                                         "DPITCHW)");
+    const GroupValues g2 = in.read_group({{"VXWHL", kReal},
+                                          {"VYWHL", kReal},
+                                          {"VZWHL", kReal},
+                                          {"VROLLW", kAngle},
+                                          {"VYAWW", kAngle},
+                                          {"VPITCHW", kAngle}},
+                                         "the flexible wheel rates line (VXWHL VYWHL VZWHL VROLLW "
+                                         "VYAWW VPITCHW)");
+    p.wheel_deviations = {g1.real(0), g1.real(1), g1.real(2), g1.real(3), g1.real(4), g1.real(5),
+                          g2.real(0), g2.real(1), g2.real(2), g2.real(3), g2.real(4), g2.real(5)};
+  }
+
+  // ---- line 23: subsurface points ----
+  if (d.s >= 2) {
+    read_subsurface_block(in, d.s, p.subsurface, p.source.warnings);
+    if (d.s == 3) st.has_subsurface = true;
+  }
+
+  st.last = p;
+  st.has_case = true;
+  return p;
+}
+
+ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, double gaught,
+                                             std::vector<std::string>& warnings) const {
+  const char* body = is_wheel ? "wheel" : "rail";
+  const GroupValues g = in.read_group({{"FNAME", FieldKind::string},
+                                       {"MIRRORY", kInt},
+                                       {"SCALEYZ", kReal},
+                                       {"SMOOTH", kReal},
+                                       {"MIRRORZ", kInt, true},
+                                       {"PRFOPT", kInt, true}},
+                                      fmt::format("the {} profile line ('FNAME' MIRRORY SCALEYZ "
+                                                  "SMOOTH {{MIRRORZ {{PRFOPT}}}})",
+                                                  body));
+  ProfileSpec ps;
+  ps.file = g.text(0);
+  require_int_range(in, g.line(1), "MIRRORY", g.integer(1), -1, 1);
+  ps.mirror_y = g.integer(1);
+  ps.scale_yz = g.real(2);
+  if (ps.scale_yz <= 1e-6) {
+    warnings.push_back(fmt::format("{} profile: SCALEYZ = {} clamped to 1e-6", body, ps.scale_yz));
+    ps.scale_yz = 1e-6;
+  }
+  ps.smooth = g.real(3);
+  if (g.has(4)) {
+    require_int_range(in, g.line(4), "MIRRORZ", g.integer(4), -1, 1);
+    ps.mirror_z = g.integer(4);
+  }
+  if (g.has(5)) {
+    require_int_range(in, g.line(5), "PRFOPT", g.integer(5), 0, 2);
+    ps.prfopt = g.integer(5);
+  }
+  if (ps.prfopt >= 1) {
+    const GroupValues o = in.read_group({{"ISMOOTH", kInt},
+                                         {"ZIGTHRS", kAngle},
+                                         {"KINKHIGH", kAngle},
+                                         {"KINKLOW", kAngle},
+                                         {"KINKWID", kReal}},
+                                        "the profile options line (ISMOOTH ZIGTHRS KINKHIGH "
+                                        "KINKLOW KINKWID)");
+    ps.ismooth = std::clamp(o.integer(0), 0, 2);
+    ps.zigthrs = std::max(o.real(1), std::numbers::pi / 4.0);
+    ps.kinkhigh = o.real(2);
+    ps.kinklow = o.real(3);
+    ps.kinkwid = o.real(4);
+  }
+  if (ps.prfopt >= 2) {
+    const GroupValues o = in.read_group({{"ERRHND", kInt}, {"MAXOMIT", kReal}},
+                                        "the profile error line (ERRHND MAXOMIT)");
+    require_int_range(in, o.line(0), "ERRHND", o.integer(0), -2, 1);
+    require_real_range(in, o.line(1), "MAXOMIT", o.real(1), 0.0, 1.0);
+    ps.errhnd = o.integer(0);
+    ps.maxomit = o.real(1);
+  }
+
+  // The file itself, relative to the .inp folder.
+  const int line = g.line(0);
+  const std::filesystem::path name(ps.file);
+  const std::filesystem::path path =
+      ((name.is_absolute() || base_dir_.empty()) ? name : base_dir_ / name).lexically_normal();
+  ps.path = path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    in.fail(line, fmt::format("{} profile file '{}' not found", body, ps.file), ps.file);
+  }
+  const ProfileFormat format = profile_format_of(path);
+  if (format == ProfileFormat::Slices && !is_slices_extension(path, is_wheel)) {
+    in.fail(line,
+            fmt::format("a {} profile needs a {} slices file", body, is_wheel ? ".slcw" : ".slcs"),
+            ps.file);
+  }
+  if (format == ProfileFormat::Slices && !is_wheel && gaught > 0.0) {
+    in.fail(line, fmt::format("a rail slices file (.slcs) requires GAUGHT ≤ 0, not {}", gaught),
+            ps.file);
+  }
+  ProfileOptions options;
+  options.is_wheel = is_wheel;
+  options.mirror_y = ps.mirror_y;
+  options.mirror_z = ps.mirror_z;
+  options.scale_yz = ps.scale_yz;
+  try {
+    if (format == ProfileFormat::Slices) {
+      ps.sliced = true;
+      ps.slices = read_slices_file(path, options, warnings);
+    } else {
+      ps.profile = read_profile_file(path, options, warnings);
+    }
+  } catch (const InputError& e) {
+    // Errors inside the profile file name that file; say where it was asked for.
+    throw InputError(
+        e.file(), e.line(),
+        fmt::format("{} ({} profile named at {}:{})", e.message(), body, in.file(), line),
+        e.offending());
+  }
+  auto check_chord = [&](const Profile& prof) {
+    const double chord = profile_chord_length(prof);
+    if (!(chord >= kMinChord && chord <= kMaxChord)) {
+      in.fail(line,
+              fmt::format("{} profile '{}' has a chord length of {:.6g} mm, outside 5..500 mm "
+                          "(check SCALEYZ = {})",
+                          body, prof.file, chord, ps.scale_yz),
+              ps.file);
+    }
+  };
+  if (ps.sliced) {
+    for (const Profile& prof : ps.slices.slices) check_chord(prof);
+  } else {
+    check_chord(ps.profile);
+  }
+  return ps;
+}
+
+}  // namespace rollcontact::format

@@ -1,0 +1,112 @@
+// The O = 5 table of quantities per contact element (spec/outputs.md §3.6).
+
+#include <cmath>
+#include <numbers>
+#include <ostream>
+#include <string>
+
+#include "format/report/number_format.hpp"
+#include "format/report/report_internal.hpp"
+#include "format/report/report_values.hpp"
+
+namespace rollcontact::format::report {
+namespace {
+
+double at(const std::vector<double>& f, std::size_t i) {
+  return i < f.size() ? f[i] : 0.0;
+}
+
+void write_header(std::ostream& os, int t, int h) {
+  line(os, "");
+  line(os, " QUANTITIES DISTRIBUTED OVER THE CONTACT AREA:");
+  line(os, " \"H-PEN\" IS THE UNDEFORMED DISTANCE WITH THE APPROACH TAKEN INTO ACCOUNT.");
+  if (t == 0) {
+    line(os, " PN IS THE NORMAL PRESSURE, PT IS THE TANGENTIAL TRACTION (2-VECTOR).");
+    line(os, " X, H AND PEN ARE IN MM, PN AND PT ARE IN N/MM^2, AND ARGUMENTS ARE IN DEGREES.");
+    line(os, "");
+    line(os, "     X          H-PEN        PN       ABS(PT)        ARG(PT)");
+    return;
+  }
+  const std::string columns =
+      "     X         H-PEN        PN      TRCBND    ABS(PT)     ARG(PT;-S)  ABS(S)      ";
+  line(os, " PN IS THE NORMAL PRESSURE, PT THE TANGENTIAL TRACTION (2-VECTOR).");
+  if (t == 1) {
+    line(os, " S IS THE SLIP DISTANCE PER STEP, WHICH IS OPPOSITE TO THE TANGENTIAL TRACTION.");
+    line(os, " RIGID SHIFT(X, Y) ARE THE (X, Y) COMPONENTS OF THE RIGID SHIFT DISTANCE W.");
+    line(os,
+         " X, H, PEN, S AND W ARE IN MM, PN AND PT ARE IN N/MM^2, AND ARGUMENTS ARE IN DEGREES.");
+    line(os, "");
+    line(os, "");
+    line(os, columns + "RIGID SHIFT(X, Y)");
+    return;
+  }
+  line(os, " S IS THE RELATIVE SLIP VELOCITY, WHICH IS OPPOSITE TO THE TANGENTIAL TRACTION.");
+  line(os, " RIGID SLIP(X, Y) ARE THE (X, Y) COMPONENTS OF THE RELATIVE RIGID SLIP VELOCITY W.");
+  line(os,
+       " X, H AND PEN ARE IN MM, PN AND PT ARE IN N/MM^2, S AND W ARE DIMENSIONLESS, ARGUMENT IS "
+       "IN DEGREES.");
+  line(os, "");
+  line(os, columns + "RIGID SLIP(X, Y)" + (h >= 1 ? "        TEMP1      TEMP2" : ""));
+}
+
+}  // namespace
+
+void write_element_table(std::ostream& os, const Problem& problem, const Solution& solution) {
+  const auto& d = problem.digits;
+  const Grid& g = solution.grid;
+  if (solution.state.size() != g.size()) return;
+  write_header(os, d.t, d.h);
+
+  const double pen = effective_approach(problem, solution);
+  const double mu = static_friction(problem.friction);
+  const EffectiveKinematics ek = effective_kinematics(problem, solution);
+  const EffectiveCreepages c = printed_creepages(problem, solution);
+  const auto& kin = problem.kinematics;
+  const bool rolling = d.t >= 2;
+  // Rigid slip (T=2,3) or shift (T=1) per element, physics.md §5; E=2/E=3 drop a spin term.
+  const double offset = rolling ? ek.dq * kin.facphi : 0.0;
+  const bool spin_x = d.e != 3, spin_y = d.e != 2;
+
+  for (int iy = 0; iy < g.my; ++iy) {
+    bool row_started = false;
+    for (int ix = 0; ix < g.mx; ++ix) {
+      const std::size_t i = g.index(ix, iy);
+      const ElementState state = solution.state[i];
+      if (state == ElementState::Exterior && d.o < 6) continue;
+      if (!row_started) {
+        line(os, "");
+        line(os, " Y = " + fortran_g(g.y_centre(iy), 12, 4) + " ROW" + fortran_i(iy + 1, 3) +
+                     " OF THE POTENTIAL CONTACT");
+        line(os, "");
+        row_started = true;
+      }
+      const double x = g.x_centre(ix), y = g.y_centre(iy);
+      const double pn = at(solution.pn, i), px = at(solution.px, i), py = at(solution.py, i);
+      const double h_pen = at(solution.h, i) - pen;
+      const double pt_abs = std::hypot(px, py);
+      const double pt_arg = std::atan2(py, px) * 180.0 / std::numbers::pi;
+      if (d.t == 0) {
+        line(os, " " + fortran_g(x, 12, 4) + fortran_g(h_pen, 12, 4) + fortran_g(pn, 12, 4) +
+                     fortran_g(pt_abs, 12, 4) + fortran_f(pt_arg, 10, 1));
+        continue;
+      }
+      // Traction bound mu p_n: exact for Coulomb friction; for slip-dependent laws the Solution
+      // has no local mu, and |p_t| equals the bound in slip.
+      double trcbnd = mu * pn;
+      if (problem.friction.law != 0 && state == ElementState::Slip) trcbnd = pt_abs;
+      const double s_abs =
+          state == ElementState::Slip ? std::hypot(at(solution.sx, i), at(solution.sy, i)) : 0.0;
+      const double wx = c.x - (spin_x ? c.phi * (y - kin.spinyo + std::sin(ek.chi) * offset) : 0.0);
+      const double wy = c.y + (spin_y ? c.phi * (x - kin.spinxo + std::cos(ek.chi) * offset) : 0.0);
+      std::string row = " " + fortran_g(x, 12, 4) + fortran_g(h_pen, 11, 3) + fortran_g(pn, 11, 3) +
+                        fortran_g(trcbnd, 11, 3) + fortran_g(pt_abs, 11, 3) +
+                        fortran_f(pt_arg, 10, 1) + "  " + fortran_g(s_abs, 11, 3) +
+                        fortran_g(wx, 11, 3) + fortran_g(wy, 11, 3);
+      if (d.h >= 1)
+        row += fortran_g(0.0, 11, 4) + fortran_g(0.0, 11, 4);  // temperatures not in Solution
+      line(os, row);
+    }
+  }
+}
+
+}  // namespace rollcontact::format::report

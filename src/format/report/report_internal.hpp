@@ -1,0 +1,30 @@
+#pragma once
+// Pieces of the .out report shared between report_*.cpp files (not part of the public API).
+
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+#include "rollcontact/problem.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::format::report {
+
+/// Writes `text` and a newline.
+void line(std::ostream& os, std::string_view text);
+
+/// Fortran a12 of a label: left-aligned, padded with blanks to 12 characters.
+std::string a12(std::string_view label);
+
+/// Module-3 parameter blocks printed for O >= 2 (digit echo up to kinematic constants).
+void write_parameter_blocks(std::ostream& os, const Problem& problem, const Solution& solution);
+
+/// Force block (O >= 1), sensitivities and statistics (O >= 2), §3.3–3.4.
+void write_force_block(std::ostream& os, const Problem& problem, const Solution& solution);
+void write_sensitivities(std::ostream& os, const Problem& problem, const Solution& solution);
+void write_statistics(std::ostream& os, const Problem& problem, const Solution& solution);
+
+/// The O = 5 table of quantities per contact element, §3.6.
+void write_element_table(std::ostream& os, const Problem& problem, const Solution& solution);
+
+}  // namespace rollcontact::format::report

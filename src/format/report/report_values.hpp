@@ -1,0 +1,44 @@
+#pragma once
+// Values that reports and JSON derive from a Problem and its Solution in the same way as CONTACT:
+// effective kinematics after the silent adjustments (spec/physics.md §14), the friction
+// coefficient used to scale forces, and the creepages/shifts with solved unknowns filled in.
+
+#include "rollcontact/problem.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::format {
+
+/// Rolling direction, step, velocity and time step as the solver uses them.
+struct EffectiveKinematics {
+  double chi = 0.0;    ///< [rad]
+  double dq = 1.0;     ///< [mm]
+  double veloc = 1.0;  ///< [mm/s]
+  double dt = 1.0;     ///< [s]
+};
+
+/// Applies physics.md §14: T<=1 gives chi=0, dq=1, V=1; steady rolling with a grid-bound solver
+/// or a simplified theory uses dq = dx and chi in {0, pi}.
+EffectiveKinematics effective_kinematics(const Problem& problem, const Solution& solution);
+
+/// Static friction coefficient mu_s that scales relative forces (FX/FSTAT/FN): FSTAT for
+/// Coulomb, the zero-slip value FKIN + P1 + P3 for the falling laws L=2..4, FREF for L=6.
+double static_friction(const Friction& friction);
+
+/// Creepages (T=2,3) or shifts (T=1) with solved unknowns (F=1: x, F=2: x and y) taken from the
+/// solution and prescribed ones from the problem.
+struct EffectiveCreepages {
+  double x = 0.0, y = 0.0, phi = 0.0;
+};
+EffectiveCreepages effective_creepages(const Problem& problem, const Solution& solution);
+
+/// As effective_creepages, with solved components that are negligible against the other one
+/// (|x| < |y| EPS and vice versa) set to 0 as CONTACT prints them.
+EffectiveCreepages printed_creepages(const Problem& problem, const Solution& solution);
+
+/// Approach [mm]: prescribed (N=0) or solved (N=1).
+double effective_approach(const Problem& problem, const Solution& solution);
+
+/// True when the M=4 interfacial layer has an active plasticity limit (0 < TAU_C0 <= 1e10).
+bool uses_plasticity(const Problem& problem);
+
+}  // namespace rollcontact::format

@@ -1,0 +1,30 @@
+#pragma once
+// The CONTACT-style text report (.out), spec/outputs.md §3.
+
+#include <iosfwd>
+#include <string>
+
+#include "rollcontact/problem.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::format {
+
+/// Banner at the top of a report.
+void write_report_banner(std::ostream& os);
+/// All blocks of one solved case at the level of problem.digits.o.
+void write_case_report(std::ostream& os, const Problem& problem, const Solution& solution);
+/// A case that could not be solved (error / not supported): header and message.
+void write_case_error(std::ostream& os, const Problem& problem, const std::string& message);
+/// Closing lines.
+void write_report_end(std::ostream& os);
+
+/// The element-division picture (`.` exterior, `*` adhesion, `S` slip, `|` plastic), §3.5.
+void write_element_division(std::ostream& os, const Solution& solution, int tangential_digit);
+/// Same, with the rolling direction chi [rad] printed under the picture for T = 2, 3.
+void write_element_division(std::ostream& os, const Solution& solution, int tangential_digit,
+                            double chi);
+
+/// The ` Case     n` line (preceded by a blank line), with the result element when REID >= 1.
+void write_case_header(std::ostream& os, const Problem& problem);
+
+}  // namespace rollcontact::format

@@ -1,0 +1,65 @@
+#include "format/report/subs_writer.hpp"
+
+#include <fmt/format.h>
+
+#include <string_view>
+
+#include "format/report/number_format.hpp"
+#include "format/text/atomic_file.hpp"
+
+namespace rollcontact::format {
+
+namespace {
+
+// Column titles as CONTACT writes them (its Matlab scripts read the file by position).
+constexpr std::string_view kTitles1 =
+    "%    X           Y           Z          UX          UY          UZ        SIGHYD      SIGVM";
+constexpr std::string_view kTitles2 =
+    "       SIGXX       SIGXY       SIGXZ       SIGYY       SIGYZ"
+    "       SIGZZ";
+
+void append_block(std::string& out, const SubsurfaceResult& r, bool tensor) {
+  const std::size_t columns = tensor ? 14 : 8;
+  out += "%   NX          NY          NZ";
+  for (std::size_t c = 3; c < columns; ++c) out += "           -";
+  out += '\n';
+  out += fortran_i(static_cast<long long>(r.x.size()), 6) +
+         fortran_i(static_cast<long long>(r.y.size()), 12) +
+         fortran_i(static_cast<long long>(r.z.size()), 12) + std::string(6, ' ');
+  for (std::size_t c = 3; c < columns; ++c) out += "   0.000    ";
+  out += '\n';
+  out += kTitles1;
+  if (tensor) out += kTitles2;
+  out += '\n';
+  const std::size_t nx = r.x.size(), ny = r.y.size();
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const double row[14] = {r.x[k % nx], r.y[(k / nx) % ny], r.z[k / (nx * ny)], r.ux[k],  r.uy[k],
+                            r.uz[k],     r.sighyd[k],        r.sigvm[k],         r.sxx[k], r.sxy[k],
+                            r.sxz[k],    r.syy[k],           r.syz[k],           r.szz[k]};
+    for (std::size_t c = 0; c < columns; ++c) out += fmt_sig(12, 6, 5, row[c]);
+    out += '\n';
+  }
+}
+
+}  // namespace
+
+std::string format_subs(const Problem& problem, const Solution& solution) {
+  std::string out;
+  for (const SubsurfaceResult& r : solution.subsurface) {
+    append_block(out, r, problem.subsurface.matfil >= 2);
+  }
+  return out;
+}
+
+std::filesystem::path write_subs_file(const std::filesystem::path& output_stem,
+                                      const Problem& problem, const Solution& solution) {
+  if (problem.digits.s < 1 || problem.subsurface.matfil < 1 || solution.subsurface.empty()) {
+    return {};
+  }
+  std::filesystem::path path = output_stem;
+  path += fmt::format(".{:04d}.subs", problem.case_number);
+  write_file_atomically(path, format_subs(problem, solution));
+  return path;
+}
+
+}  // namespace rollcontact::format

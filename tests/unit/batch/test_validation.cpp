@@ -1,0 +1,253 @@
+// `rollcontact validate`: the comparison at the tolerance edges with synthetic cases, the
+// not-supported handling, the table, and a run over real examples into a separate folder.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "batch/validation.hpp"
+#include "batch/validation_compare.hpp"
+#include "batch/validation_summary.hpp"
+#include "batch/validation_tolerances.hpp"
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::batch {
+namespace {
+
+const std::filesystem::path kExamples = ROLLCONTACT_EXAMPLES_DIR;
+
+#define REQUIRE_EXAMPLES()                                              \
+  if (!std::filesystem::is_directory(kExamples)) {                      \
+    GTEST_SKIP() << "example folder not found: " << kExamples.string(); \
+  }
+
+format::ReportCase make_case(int number, std::map<std::string, double> values) {
+  format::ReportCase c;
+  c.number = number;
+  c.values = std::move(values);
+  return c;
+}
+
+CaseStatus status_of(const format::ReportCase& ours, const format::ReportCase& ref) {
+  return compare_case(&ours, ref, default_tolerances()).status;
+}
+
+TEST(ValidationTolerances, TableHasTheContractQuantities) {
+  const auto t = default_tolerances();
+  for (const char* name : {"FN", "FX", "FY", "MZ", "APPROACH", "PMAX", "CREEP X", "CREEP Y",
+                           "SHIFT X", "SHIFT Y", "NCON", "NADH", "NSLIP"})
+    EXPECT_NE(t.find(name), nullptr) << name;
+  for (const char* name : {"FN/G", "FX/FSTAT/FN", "ELEN", "FRIC", "NPOT", "INORM", "ITANG"})
+    EXPECT_EQ(t.find(name), nullptr) << name;
+  ASSERT_NE(t.find("patch 2/FN"), nullptr);
+  EXPECT_EQ(t.find("patch 2/FN"), t.find("FN"));
+  // The contract: forces 1e-3 relative + 1e-6·FN absolute; counts at least ±2.
+  EXPECT_NEAR(allowed_difference(*t.find("FX"), 100.0, 1000.0), 0.1 + 1e-3, 1e-9);
+  EXPECT_NEAR(allowed_difference(*t.find("NCON"), 177, 9.195), 2.0, 1e-12);
+  EXPECT_NEAR(allowed_difference(*t.find("NCON"), 1969, 1e5), 19.69, 1e-6);
+}
+
+TEST(ValidationCompare, ForceAtTheToleranceEdge) {
+  // FN = 1000: allowed |ΔFN| = 1e-3·1000 + 1e-6·1000 = 1.001.
+  const auto ref = make_case(1, {{"FN", 1000.0}});
+  EXPECT_EQ(status_of(make_case(1, {{"FN", 1001.0}}), ref), CaseStatus::Passed);
+  EXPECT_EQ(status_of(make_case(1, {{"FN", 998.999}}), ref), CaseStatus::Passed);
+  EXPECT_EQ(status_of(make_case(1, {{"FN", 1001.01}}), ref), CaseStatus::Failed);
+  EXPECT_EQ(status_of(make_case(1, {{"FN", 998.98}}), ref), CaseStatus::Failed);
+}
+
+TEST(ValidationCompare, ZeroForceComponentUsesTheFnFloor) {
+  // FX near zero: the absolute part 1e-6·FN = 0.082 decides.
+  const auto ref = make_case(1, {{"FN", 8.2e4}, {"FX", 1e-3}});
+  EXPECT_EQ(status_of(make_case(1, {{"FN", 8.2e4}, {"FX", 0.08}}), ref), CaseStatus::Passed);
+  EXPECT_EQ(status_of(make_case(1, {{"FN", 8.2e4}, {"FX", -0.09}}), ref), CaseStatus::Failed);
+}
+
+TEST(ValidationCompare, FilteredZeroAllowsNoiseOfTheOrderOfFn) {
+  // validation.md §3: a value CONTACT prints as 0 is filtered noise: up to 1e-4·FN.
+  const auto ref = make_case(3, {{"FN", 1.067e5}, {"MZ", 0.0}, {"FY", 0.0}});
+  EXPECT_EQ(status_of(make_case(3, {{"FN", 1.067e5}, {"MZ", 0.1364}, {"FY", -10.0}}), ref),
+            CaseStatus::Passed);
+  EXPECT_EQ(status_of(make_case(3, {{"FN", 1.067e5}, {"MZ", 10.8}, {"FY", 0.0}}), ref),
+            CaseStatus::Failed);
+  // A nonzero reference keeps the contract tolerance.
+  const auto ref2 = make_case(3, {{"FN", 1.067e5}, {"FY", 1.0}});
+  EXPECT_EQ(status_of(make_case(3, {{"FN", 1.067e5}, {"FY", 1.2}}), ref2), CaseStatus::Failed);
+}
+
+TEST(ValidationCompare, PrintedRoundingPasses) {
+  // One unit in the fourth digit of a mantissa near 1 is exactly the 1e-3 relative tolerance.
+  const auto ref = make_case(1, {{"APPROACH", 1.000e-2}});
+  EXPECT_EQ(status_of(make_case(1, {{"APPROACH", 1.001e-2}}), ref), CaseStatus::Passed);
+  EXPECT_EQ(status_of(make_case(1, {{"APPROACH", 1.002e-2}}), ref), CaseStatus::Failed);
+}
+
+TEST(ValidationCompare, CountsWithinTwoElements) {
+  const auto ref = make_case(1, {{"NCON", 177}, {"NADH", 45}, {"NSLIP", 132}});
+  EXPECT_EQ(status_of(make_case(1, {{"NCON", 179}, {"NADH", 43}, {"NSLIP", 132}}), ref),
+            CaseStatus::Passed);
+  EXPECT_EQ(status_of(make_case(1, {{"NCON", 180}, {"NADH", 45}, {"NSLIP", 132}}), ref),
+            CaseStatus::Failed);
+  EXPECT_EQ(status_of(make_case(1, {{"NCON", 177}, {"NADH", 42}, {"NSLIP", 132}}), ref),
+            CaseStatus::Failed);
+}
+
+TEST(ValidationCompare, OnlyWhatTheReferencePrintsIsCompared) {
+  // O=1 reference: forces only; our statistics and unknown quantities are ignored.
+  const auto ref = make_case(1, {{"FN", 10.0}, {"FN/G", 0.5}});
+  const auto ours = make_case(1, {{"FN", 10.0}, {"FN/G", 99.0}, {"NCON", 3}});
+  const auto c = compare_case(&ours, ref, default_tolerances());
+  EXPECT_EQ(c.status, CaseStatus::Passed);
+  ASSERT_EQ(c.quantities.size(), 1u);
+  EXPECT_EQ(c.quantities[0].name, "FN");
+}
+
+TEST(ValidationCompare, MissingQuantityOrCaseFails) {
+  const auto ref = make_case(2, {{"FN", 10.0}, {"PMAX", 4.0}});
+  const auto ours = make_case(2, {{"FN", 10.0}});
+  const auto c = compare_case(&ours, ref, default_tolerances());
+  EXPECT_EQ(c.status, CaseStatus::Failed);
+  EXPECT_NE(c.reason.find("PMAX"), std::string::npos);
+  EXPECT_EQ(compare_case(nullptr, ref, default_tolerances()).status, CaseStatus::Failed);
+  // O=0 in the reference: nothing to compare, whether or not we print the case.
+  EXPECT_EQ(compare_case(nullptr, make_case(1, {}), default_tolerances()).status,
+            CaseStatus::Passed);
+}
+
+TEST(ValidationCompare, OverflowedReferenceIsSkipped) {
+  const auto ref = make_case(1, {{"FN", 10.0}, {"MZ", std::nan("")}});
+  const auto c = compare_case(&ref, ref, default_tolerances());
+  EXPECT_EQ(c.status, CaseStatus::Passed);
+  EXPECT_EQ(c.quantities.size(), 1u);
+}
+
+TEST(ValidationCompare, ErrorCaseIsNotSupported) {
+  format::ReportCase ours = make_case(2, {});
+  ours.error = "/x/cattaneo.inp:35: not supported yet: tangential problem T=1";
+  const auto c = compare_case(&ours, make_case(2, {{"FX", -3.218}}), default_tolerances());
+  EXPECT_EQ(c.status, CaseStatus::NotSupported);
+  EXPECT_EQ(strip_location(c.reason), "not supported yet: tangential problem T=1");
+  EXPECT_EQ(strip_location("/a b/x.inp:3: /a b/x.inp:9: file 'y.txt': not found"),
+            "file 'y.txt': not found");
+  EXPECT_EQ(strip_location("M=4: layer"), "M=4: layer");
+}
+
+TEST(ValidationCompare, ReportsByCaseNumber) {
+  format::Report ours, ref;
+  ours.cases = {make_case(2, {{"FN", 2.0}}), make_case(1, {{"FN", 1.5}})};
+  ref.cases = {make_case(1, {{"FN", 1.0}}), make_case(2, {{"FN", 2.0}})};
+  const auto cs = compare_reports(ours, ref, default_tolerances());
+  ASSERT_EQ(cs.size(), 2u);
+  EXPECT_EQ(cs[0].number, 1);
+  EXPECT_EQ(cs[0].status, CaseStatus::Failed);
+  EXPECT_EQ(cs[1].status, CaseStatus::Passed);
+}
+
+ExampleResult synthetic_example() {
+  ExampleResult r;
+  r.name = "demo";
+  CaseComparison passed{1, CaseStatus::Passed, "", {}};
+  passed.quantities.push_back({"PMAX", 4.4, 4.393, 0.02, true, false});
+  passed.quantities.push_back({"NCON", 178, 177, 2, true, true});
+  r.cases.push_back(passed);
+  for (int k = 2; k <= 4; ++k)
+    r.cases.push_back({k, CaseStatus::NotSupported, "/d/demo.inp:9: not supported yet: T=1", {}});
+  r.cases.push_back({6, CaseStatus::NotSupported, "not supported yet: T=1", {}});
+  r.cases.push_back({7, CaseStatus::Failed, "outside tolerance: FX", {}});
+  return r;
+}
+
+TEST(ValidationSummary, TableAndReasons) {
+  const std::vector<ExampleResult> results{synthetic_example()};
+  EXPECT_TRUE(any_failed(results));
+  const auto w = results[0].worst();
+  EXPECT_EQ(w.case_number, 1);
+  EXPECT_EQ(w.quantity, "PMAX");  // counts are not in the relative statistics
+  EXPECT_NEAR(w.relative, 0.007 / 4.393, 1e-12);
+
+  const std::string md = format_validation_table(results, TableStyle::Markdown);
+  EXPECT_NE(md.find("| `demo` | 6 | 1 | 1 | 4 | 1.6e-03 (c1 PMAX) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| **total** | 6 | 1 | 1 | 4 |"), std::string::npos) << md;
+  const std::string reasons = format_case_reasons(results, TableStyle::Text);
+  EXPECT_NE(reasons.find("demo c2-c4, c6: not supported yet: T=1"), std::string::npos) << reasons;
+  EXPECT_NE(reasons.find("demo c7: outside tolerance: FX"), std::string::npos) << reasons;
+  EXPECT_NE(format_case_details(results[0]).find("c7    failed: outside tolerance: FX"),
+            std::string::npos);
+  EXPECT_EQ(format_case_ranges({9, 1, 2, 3, 5}), "c1-c3, c5, c9");
+
+  std::vector<ExampleResult> fine{synthetic_example()};
+  fine[0].cases.pop_back();
+  EXPECT_FALSE(any_failed(fine));  // not supported alone is not a failure
+}
+
+class TemporaryFolder {
+ public:
+  TemporaryFolder()
+      : path_(std::filesystem::temp_directory_path() /
+              ("rollcontact-test-validation-" +
+               std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TemporaryFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+TEST(Validation, FindsTheExamples) {
+  REQUIRE_EXAMPLES();
+  const auto examples = find_examples(kExamples);
+  ASSERT_EQ(examples.size(), 18u);
+  EXPECT_EQ(examples.front().name, "bentall");
+  EXPECT_EQ(examples.back().name, "wheelflat");
+}
+
+TEST(Validation, CattaneoCase1Passes) {
+  REQUIRE_EXAMPLES();
+  const TemporaryFolder out;
+  const ExampleFiles files{"cattaneo", kExamples / "cattaneo.inp", kExamples / "cattaneo.ref_out"};
+  const auto r = validate_example(files, out.path(), ValidationOptions{});
+  EXPECT_TRUE(std::filesystem::exists(out.path() / "cattaneo.out"));  // never into DIR
+  EXPECT_TRUE(r.run_error.empty()) << r.run_error;
+  ASSERT_EQ(r.cases.size(), 2u);
+  EXPECT_EQ(r.cases[0].status, CaseStatus::Passed) << format_case_details(r);
+  EXPECT_GE(r.cases[0].quantities.size(), 9u);  // FN FX FY MZ APPROACH PMAX NCON NADH NSLIP
+}
+
+TEST(Validation, UnreadableInputMakesEveryCaseNotSupported) {
+  REQUIRE_EXAMPLES();
+  const TemporaryFolder out;
+  // A module-1 example (our reader rejects the whole file while module 1 is not supported);
+  // whatever becomes of module 1, the example must yield its 21 reference cases.
+  const auto dir = out.path() / "in";
+  std::filesystem::create_directories(dir);
+  for (const char* ext : {".inp", ".ref_out"})
+    std::filesystem::copy_file(kExamples / (std::string("mbench_a22_right") + ext),
+                               dir / (std::string("mbench_a22_right") + ext));
+  ValidationOptions options;
+  options.output_dir = out.path() / "out";
+  const auto results = validate_folder(dir, options);
+  ASSERT_EQ(results.size(), 1u);
+  const auto& r = results[0];
+  ASSERT_EQ(r.cases.size(), 21u);
+  if (r.run_error.empty()) GTEST_SKIP() << "module 1 is read now";
+  for (const auto& c : r.cases) EXPECT_EQ(c.status, CaseStatus::NotSupported) << c.reason;
+  EXPECT_FALSE(any_failed(results));
+}
+
+TEST(Validation, EmptyFolderIsAnInputError) {
+  const TemporaryFolder out;
+  EXPECT_THROW(validate_folder(out.path(), ValidationOptions{}), InputError);
+}
+
+}  // namespace
+}  // namespace rollcontact::batch
