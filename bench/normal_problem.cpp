@@ -14,7 +14,7 @@
 #include <complex>
 #include <vector>
 
-#include "elastic/fft_backend.hpp"
+#include "core/fft_backend.hpp"
 #include "rollcontact/solve.hpp"
 #include "wheel_rail_patch.hpp"
 
@@ -30,9 +30,8 @@ constexpr Size sizes[] = {{71, 81, 1.0}, {143, 163, 2.0}, {287, 323, 4.0}, {575,
 
 /// Time of one forward + inverse FFT pair of the padded product (≥ 2mx−1 × 2my−1) [s].
 double fft_pair_seconds(const Grid& grid, FftPlanning planning) {
-  auto engine =
-      elastic::make_fft_engine(FftBackendKind::Default, elastic::good_fft_size(2 * grid.mx - 1),
-                               elastic::good_fft_size(2 * grid.my - 1), planning);
+  auto engine = core::make_fft_engine(FftBackendKind::Default, core::good_fft_size(2 * grid.mx - 1),
+                                      core::good_fft_size(2 * grid.my - 1), planning);
   std::vector<double> real(engine->real_size(), 0.0);
   std::vector<std::complex<double>> spectrum(engine->spectrum_size());
   for (std::size_t i = 0; i < real.size(); ++i) real[i] = static_cast<double>(i % 7);

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "core/fft_backend.hpp"
 #include "elastic/block_convolution.hpp"
-#include "elastic/fft_backend.hpp"
 #include "elastic/influence.hpp"
 #include "tangential/tangential_preconditioner.hpp"
 
@@ -53,16 +53,15 @@ std::vector<double> random_field(std::size_t n, unsigned seed) {
 }
 
 /// An engine of the zero-padded size of the grid, filled with a random field.
-std::unique_ptr<elastic::FftEngine> padded_engine(const Size& s) {
-  auto engine =
-      elastic::make_fft_engine(FftBackendKind::Default, elastic::good_fft_size(2 * s.mx - 1),
-                               elastic::good_fft_size(2 * s.my - 1));
+std::unique_ptr<core::FftEngine> padded_engine(const Size& s) {
+  auto engine = core::make_fft_engine(FftBackendKind::Default, core::good_fft_size(2 * s.mx - 1),
+                                      core::good_fft_size(2 * s.my - 1));
   const auto field = random_field(engine->real_size(), 1);
   std::copy(field.begin(), field.end(), engine->real_data());
   return engine;
 }
 
-void fft_pair(elastic::FftEngine& engine) {
+void fft_pair(core::FftEngine& engine) {
   engine.execute_forward(engine.n_slow());
   engine.execute_inverse(engine.n_slow());
   benchmark::DoNotOptimize(engine.real_data()[0]);

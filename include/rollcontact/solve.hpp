@@ -3,17 +3,11 @@
 
 #include <memory>
 
+#include "rollcontact/fft_options.hpp"
 #include "rollcontact/problem.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact {
-
-/// FFT implementation used by the convolution operators.
-enum class FftBackendKind { Default, Fftw, Kiss };
-
-/// How much effort FFT planning may take. Measure (FFTW_MEASURE) makes each transform 10–25 %
-/// faster but costs seconds per new grid size on large grids; it pays off for long sequences.
-enum class FftPlanning { Estimate, Measure };
 
 /// Options that affect how, not what, is computed.
 struct SolveOptions {

@@ -24,9 +24,9 @@ BlockConvolution::BlockConvolution(int n_out, int n_in, const std::vector<const 
       my_ = k->my();
     }
   if (mx_ == 0) throw std::invalid_argument("BlockConvolution: all blocks are zero");
-  const int nf = good_fft_size(2 * mx_ - 1);
-  const int ns = good_fft_size(2 * my_ - 1);
-  engine_ = make_fft_engine(backend, nf, ns, planning);
+  const int nf = core::good_fft_size(2 * mx_ - 1);
+  const int ns = core::good_fft_size(2 * my_ - 1);
+  engine_ = core::make_fft_engine(backend, nf, ns, planning);
   const double scale = 1.0 / (static_cast<double>(nf) * static_cast<double>(ns));
 
   double* real = engine_->real_data();

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "elastic/fft_backend.hpp"
+#include "core/fft_backend.hpp"
 #include "elastic/influence.hpp"
 
 namespace rollcontact::elastic {
@@ -26,7 +26,7 @@ class BlockConvolution {
 
  private:
   int n_out_, n_in_, mx_, my_;
-  std::unique_ptr<FftEngine> engine_;
+  std::unique_ptr<core::FftEngine> engine_;
   /// Symbol of block (i, j) in the engine's channel layout, or nullptr for a zero block.
   const std::complex<double>* block(int i, int j) const noexcept;
 

@@ -22,9 +22,9 @@ FftConvolution::FftConvolution(const Kernel& kernel, FftBackendKind backend, Fft
     : mx_(kernel.mx()), my_(kernel.my()) {
   // Padding to ≥ 2m−1 keeps the offsets −(m−1) … m−1 distinct modulo the padded length, so the
   // circular convolution equals the linear one on the first m entries.
-  const int nf = good_fft_size(2 * mx_ - 1);
-  const int ns = good_fft_size(2 * my_ - 1);
-  engine_ = make_fft_engine(backend, nf, ns, planning);
+  const int nf = core::good_fft_size(2 * mx_ - 1);
+  const int ns = core::good_fft_size(2 * my_ - 1);
+  engine_ = core::make_fft_engine(backend, nf, ns, planning);
 
   double* real = engine_->real_data();
   std::fill_n(real, engine_->real_size(), 0.0);

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "elastic/fft_backend.hpp"
+#include "core/fft_backend.hpp"
 #include "elastic/influence.hpp"
 
 namespace rollcontact::elastic {
@@ -32,7 +32,7 @@ class FftConvolution final : public LinearOperator {
                  FftPlanning planning = FftPlanning::Estimate);
   void apply(const double* p, double* u) override;
   double apply_dot(const double* p, double* u) override;
-  const FftEngine& engine() const noexcept { return *engine_; }
+  const core::FftEngine& engine() const noexcept { return *engine_; }
   int mx() const noexcept { return mx_; }
   int my() const noexcept { return my_; }
 
@@ -40,7 +40,7 @@ class FftConvolution final : public LinearOperator {
   void convolve(const double* p);  // A·p into the first my rows of the engine's real array
 
   int mx_, my_;
-  std::unique_ptr<FftEngine> engine_;  // holds the kernel spectrum (scaled by 1/(nf ns))
+  std::unique_ptr<core::FftEngine> engine_;  // holds the kernel spectrum (scaled by 1/(nf ns))
 };
 
 /// Dense O(N²) product, the oracle.

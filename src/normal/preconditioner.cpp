@@ -26,9 +26,9 @@ CirculantPreconditioner::CirculantPreconditioner(const Grid& grid, const Combine
                                                  FftBackendKind backend, FftPlanning planning)
     : mx_(grid.mx),
       my_(grid.my),
-      nx_(elastic::good_fft_size(grid.mx)),
-      ny_(elastic::good_fft_size(grid.my)),
-      engine_(elastic::make_fft_engine(backend, nx_, ny_, planning)) {
+      nx_(core::good_fft_size(grid.mx)),
+      ny_(core::good_fft_size(grid.my)),
+      engine_(core::make_fft_engine(backend, nx_, ny_, planning)) {
   // Wrapped kernel: offset i is represented by the nearest periodic image (|i| ≤ n/2).
   double* work = engine_->real_data();
   for (int j = 0; j < ny_; ++j) {
@@ -58,7 +58,7 @@ CirculantPreconditioner::CirculantPreconditioner(const Grid& grid, const Combine
   engine_->execute_convolution(my_, my_);
   // Where the backend has one, apply in single precision: an approximate inverse needs no more
   // than a few digits (CG iteration counts unchanged), and the transforms are ≈ 30 % cheaper.
-  single_ = elastic::make_single_circulant(backend, nx_, ny_, planning);
+  single_ = core::make_single_circulant(backend, nx_, ny_, planning);
   if (single_) {
     std::vector<double> real_symbol(inverse_symbol.size());
     for (std::size_t k = 0; k < real_symbol.size(); ++k) real_symbol[k] = inverse_symbol[k].real();

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "elastic/fft_backend.hpp"
+#include "core/fft_backend.hpp"
 #include "rollcontact/grid.hpp"
 #include "rollcontact/solution.hpp"
 
@@ -51,8 +51,8 @@ class CirculantPreconditioner final : public Preconditioner {
   void convolve(const double* r);  // M·r into the first my rows of the engine's real array
 
   int mx_, my_, nx_, ny_;
-  std::unique_ptr<elastic::FftEngine> engine_;        // holds the inverse symbol (with 1/(nx ny))
-  std::unique_ptr<elastic::SingleCirculant> single_;  // instead of engine_ where available
+  std::unique_ptr<core::FftEngine> engine_;        // holds the inverse symbol (with 1/(nx ny))
+  std::unique_ptr<core::SingleCirculant> single_;  // instead of engine_ where available
 };
 
 }  // namespace rollcontact::normal

@@ -11,9 +11,9 @@ TangentialPreconditioner::TangentialPreconditioner(const elastic::Kernel& xx,
                                                    FftBackendKind backend)
     : mx_(xx.mx()),
       my_(xx.my()),
-      nx_(elastic::good_fft_size(xx.mx())),
-      ny_(elastic::good_fft_size(xx.my())),
-      engine_(elastic::make_fft_engine(backend, nx_, ny_)) {
+      nx_(core::good_fft_size(xx.mx())),
+      ny_(core::good_fft_size(xx.my())),
+      engine_(core::make_fft_engine(backend, nx_, ny_)) {
   const std::size_t nspec = engine_->spectrum_size();
   auto symbol = [&](const elastic::Kernel& k) {
     double* real = engine_->real_data();

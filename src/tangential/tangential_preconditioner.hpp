@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "elastic/fft_backend.hpp"
+#include "core/fft_backend.hpp"
 #include "elastic/influence.hpp"
 
 namespace rollcontact::tangential {
@@ -24,7 +24,7 @@ class TangentialPreconditioner {
 
  private:
   int mx_, my_, nx_, ny_;
-  std::unique_ptr<elastic::FftEngine> engine_;
+  std::unique_ptr<core::FftEngine> engine_;
   // Inverse symbol per half-spectrum entry (scaled), in the engine's channel layout.
   std::vector<double> ixx_, ixy_, iyy_;
 };

@@ -7,16 +7,16 @@
 #include <cmath>
 #include <vector>
 
-#include "backends.hpp"
 #include "elastic/block_convolution.hpp"
 #include "elastic/convolution.hpp"
 #include "elastic/influence.hpp"
-#include "random_field.hpp"
+#include "support/fft_backends.hpp"
+#include "support/random_field.hpp"
 
 namespace rollcontact::elastic {
 namespace {
 
-using testing::random_field;
+using test_support::random_field;
 
 /// u_i = Σ_j K_ij * p_j with DenseConvolution, the oracle.
 std::vector<std::vector<double>> dense_block(int n_out, int n_in,
@@ -89,8 +89,8 @@ TEST_P(BlockConvolutionTest, AgreesWithDenseProducts) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, BlockConvolutionTest,
-                         ::testing::ValuesIn(testing::available_backends()),
-                         testing::backend_param_name);
+                         ::testing::ValuesIn(test_support::available_backends()),
+                         test_support::backend_param_name);
 
 }  // namespace
 }  // namespace rollcontact::elastic

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <vector>
 
-#include "backends.hpp"
 #include "elastic/convolution.hpp"
 #include "elastic/influence.hpp"
-#include "random_field.hpp"
+#include "support/fft_backends.hpp"
+#include "support/random_field.hpp"
 
 namespace rollcontact::elastic {
 namespace {
@@ -19,7 +19,7 @@ constexpr Component kAllComponents[] = {Component::nn, Component::xx, Component:
                                         Component::nx, Component::ny, Component::yx};
 
 std::vector<double> random_tractions(std::size_t n, unsigned seed, bool sparse) {
-  std::vector<double> p = testing::random_field(n, seed);
+  std::vector<double> p = test_support::random_field(n, seed);
   if (sparse) {  // like an active set: many exterior elements
     for (std::size_t i = 0; i < n; i += 3) p[i] = 0.0;
   }
@@ -93,8 +93,8 @@ TEST_P(FftConvolutionTest, PaddedSizeAvoidsWrapAround) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FftConvolutionTest,
-                         ::testing::ValuesIn(testing::available_backends()),
-                         testing::backend_param_name);
+                         ::testing::ValuesIn(test_support::available_backends()),
+                         test_support::backend_param_name);
 
 TEST(DenseConvolution, MatchesDefinition) {
   const Grid grid{.mx = 3, .my = 2, .xl = 0, .yl = 0, .dx = 0.5, .dy = 0.4};

@@ -15,9 +15,9 @@
 #include <unsupported/Eigen/FFT>
 #include <vector>
 
-#include "elastic/fft_engines.hpp"
+#include "core/fft_engines.hpp"
 
-namespace rollcontact::elastic::detail {
+namespace rollcontact::core::detail {
 
 namespace {
 
@@ -179,4 +179,4 @@ std::unique_ptr<FftEngine> make_kiss_engine(int n_fast, int n_slow) {
   return std::make_unique<KissEngine>(n_fast, n_slow);
 }
 
-}  // namespace rollcontact::elastic::detail
+}  // namespace rollcontact::core::detail

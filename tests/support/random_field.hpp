@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-namespace rollcontact::elastic::testing {
+namespace rollcontact::test_support {
 
 /// n values uniform in [−1, 1), from a Mersenne twister seeded with `seed`.
 inline std::vector<double> random_field(std::size_t n, unsigned seed) {
@@ -16,4 +16,4 @@ inline std::vector<double> random_field(std::size_t n, unsigned seed) {
   return v;
 }
 
-}  // namespace rollcontact::elastic::testing
+}  // namespace rollcontact::test_support

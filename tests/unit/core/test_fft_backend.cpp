@@ -9,18 +9,18 @@
 #include <string_view>
 #include <vector>
 
-#include "backends.hpp"
-#include "elastic/fft_backend.hpp"
-#include "random_field.hpp"
+#include "core/fft_backend.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/version.hpp"
+#include "support/fft_backends.hpp"
+#include "support/random_field.hpp"
 
-namespace rollcontact::elastic {
+namespace rollcontact::core {
 namespace {
 
 using Complex = std::complex<double>;
 
-using testing::random_field;
+using test_support::random_field;
 
 /// Direct 2-D DFT half-spectrum X(kf, ks) = Σ x(i, j) e^{−2πi(kf i/nf + ks j/ns)}.
 std::vector<Complex> direct_dft(const std::vector<double>& x, int nf, int ns) {
@@ -123,8 +123,8 @@ TEST_P(FftEngineTest, PrunedRowsBehaveAsZeroPadding) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FftEngineTest,
-                         ::testing::ValuesIn(testing::available_backends()),
-                         testing::backend_param_name);
+                         ::testing::ValuesIn(test_support::available_backends()),
+                         test_support::backend_param_name);
 
 TEST(FftFactory, DefaultResolvesToConfiguredBackend) {
   auto engine = make_fft_engine(FftBackendKind::Default, 4, 4);
@@ -159,9 +159,9 @@ TEST(FftFactory, GoodSizesAreSmoothAndMinimal) {
 }
 
 }  // namespace
-}  // namespace rollcontact::elastic
+}  // namespace rollcontact::core
 
-namespace rollcontact::elastic {
+namespace rollcontact::core {
 namespace {
 
 // The single-precision convolution of the preconditioners against the double-precision engine:
@@ -210,4 +210,4 @@ TEST(SingleCirculant, MatchesTheDoublePrecisionConvolution) {
 }
 
 }  // namespace
-}  // namespace rollcontact::elastic
+}  // namespace rollcontact::core

@@ -1,16 +1,16 @@
 // Backend selection for the FFT engines.
 
-#include "elastic/fft_backend.hpp"
+#include "core/fft_backend.hpp"
 
 #include <algorithm>
 #include <string>
 #include <string_view>
 
-#include "elastic/fft_engines.hpp"
+#include "core/fft_engines.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/version.hpp"
 
-namespace rollcontact::elastic {
+namespace rollcontact::core {
 
 FftBackendKind resolve_fft_backend(FftBackendKind kind) noexcept {
   if (kind != FftBackendKind::Default) return kind;
@@ -104,4 +104,4 @@ int good_fft_size(int n_min) {
   }
 }
 
-}  // namespace rollcontact::elastic
+}  // namespace rollcontact::core

@@ -1,7 +1,7 @@
 // FFTW3 engine: one 2-D r2c and one 2-D c2r plan (FFTW_ESTIMATE or FFTW_MEASURE) on the engine's
 // own aligned arrays. Compiles to a stub that throws when FFTW is not built.
 
-#include "elastic/fft_engines.hpp"
+#include "core/fft_engines.hpp"
 #include "rollcontact/errors.hpp"
 
 #if ROLLCONTACT_HAVE_FFTW
@@ -15,7 +15,7 @@
 #include <new>
 #include <vector>
 
-namespace rollcontact::elastic::detail {
+namespace rollcontact::core::detail {
 
 namespace {
 
@@ -387,11 +387,11 @@ std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int n_fast, int n_sl
   return std::make_unique<FftwSingleCirculant>(n_fast, n_slow, planning);
 }
 
-}  // namespace rollcontact::elastic::detail
+}  // namespace rollcontact::core::detail
 
 #else
 
-namespace rollcontact::elastic::detail {
+namespace rollcontact::core::detail {
 
 std::unique_ptr<FftEngine> make_fftw_engine(int /*n_fast*/, int /*n_slow*/,
                                             FftPlanning /*planning*/) {
@@ -403,6 +403,6 @@ std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int /*n_fast*/, int 
   return nullptr;
 }
 
-}  // namespace rollcontact::elastic::detail
+}  // namespace rollcontact::core::detail
 
 #endif

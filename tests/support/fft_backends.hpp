@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "elastic/fft_backend.hpp"
+#include "core/fft_backend.hpp"
 
-namespace rollcontact::elastic::testing {
+namespace rollcontact::test_support {
 
 inline std::vector<FftBackendKind> available_backends() {
   std::vector<FftBackendKind> kinds;
   for (FftBackendKind k : {FftBackendKind::Fftw, FftBackendKind::Kiss}) {
-    if (fft_backend_available(k)) kinds.push_back(k);
+    if (core::fft_backend_available(k)) kinds.push_back(k);
   }
   return kinds;
 }
@@ -33,4 +33,4 @@ inline std::string backend_param_name(const ::testing::TestParamInfo<FftBackendK
   return backend_name(p.param);
 }
 
-}  // namespace rollcontact::elastic::testing
+}  // namespace rollcontact::test_support

@@ -3,9 +3,9 @@
 
 #include <memory>
 
-#include "elastic/fft_backend.hpp"
+#include "core/fft_backend.hpp"
 
-namespace rollcontact::elastic::detail {
+namespace rollcontact::core::detail {
 
 /// FFTW3 engine (only when ROLLCONTACT_HAVE_FFTW; otherwise throws NotSupportedError).
 std::unique_ptr<FftEngine> make_fftw_engine(int n_fast, int n_slow, FftPlanning planning);
@@ -17,4 +17,4 @@ std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int n_fast, int n_sl
 /// Double-precision KISS FFT engine (Eigen's unsupported FFT module).
 std::unique_ptr<FftEngine> make_kiss_engine(int n_fast, int n_slow);
 
-}  // namespace rollcontact::elastic::detail
+}  // namespace rollcontact::core::detail

@@ -7,9 +7,9 @@
 #include <string_view>
 #include <vector>
 
-#include "rollcontact/solve.hpp"
+#include "rollcontact/fft_options.hpp"
 
-namespace rollcontact::elastic {
+namespace rollcontact::core {
 
 /// Plans for real n_fast × n_slow arrays stored with the fast index contiguous
 /// (element (i, j) at i + n_fast*j). The half-spectrum has (n_fast/2+1) × n_slow complex values,
@@ -117,4 +117,4 @@ FftBackendKind resolve_fft_backend(FftBackendKind kind) noexcept;
 /// backends transform fast (a prime factor such as 647 in 1294 makes KISS FFT O(n²)).
 int good_fft_size(int n_min);
 
-}  // namespace rollcontact::elastic
+}  // namespace rollcontact::core
