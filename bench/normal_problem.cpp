@@ -49,13 +49,13 @@ double fft_pair_seconds(const Grid& grid, FftPlanning planning) {
 
 void BM_NormalProblem(benchmark::State& bstate) {
   const Size size = sizes[bstate.range(0)];
-  const Problem problem = bench::wheel_rail_patch(size.mx, size.my, size.scale);
+  const model::PatchProblem problem = bench::wheel_rail_patch(size.mx, size.my, size.scale);
   SolveOptions options;
   options.fft_planning = bstate.range(1) ? FftPlanning::Measure : FftPlanning::Estimate;
-  State state(options);
-  Solution sol = solve(problem, state);  // builds and caches kernels, plans, preconditioner
+  PatchSolver state(options);
+  Solution sol = state.solve(problem);  // builds and caches kernels, plans, preconditioner
   for (auto _ : bstate) {
-    sol = solve(problem, state);
+    sol = state.solve(problem);
     benchmark::DoNotOptimize(sol.totals.fn);
   }
   const double pair = fft_pair_seconds(sol.grid, options.fft_planning);

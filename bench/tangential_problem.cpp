@@ -25,18 +25,19 @@ struct Size {
 };
 constexpr Size sizes[] = {{71, 81, 1.0}, {143, 163, 2.0}, {287, 323, 4.0}};
 
-Problem tangential_case(const Size& size, int t) {
-  Problem p = bench::wheel_rail_patch(size.mx, size.my, size.scale);
-  p.digits.t = t;
-  p.friction.fstat = p.friction.fkin = 0.3;
-  p.kinematics.cksi = 0.0005;
-  p.kinematics.cphi = 0.0003;
-  p.kinematics.chi = 0.0;
-  p.kinematics.dq = 0.1;
-  p.kinematics.veloc = 10000.0;
-  p.solver.maxgs = 999;
-  p.solver.maxin = 100;
-  p.solver.maxnr = 30;
+model::PatchProblem tangential_case(const Size& size, int t) {
+  model::PatchProblem p = bench::wheel_rail_patch(size.mx, size.my, size.scale);
+  p.tangential.kind = t == 1   ? model::TangentialKind::Shift
+                      : t == 2 ? model::TangentialKind::TransientRolling
+                               : model::TangentialKind::SteadyRolling;
+  p.friction = {0.3, 0.3};
+  p.tangential.creepage.longitudinal = 0.0005;
+  p.tangential.creepage.spin_rad_per_mm = 0.0003;
+  p.rolling.direction_rad = 0.0;
+  p.rolling.step_mm = 0.1;
+  p.rolling.velocity_mm_per_s = 10000.0;
+  p.solver.max_inner_iterations = 999;
+  p.solver.max_newton_iterations = 30;
   return p;
 }
 
@@ -50,11 +51,11 @@ void report(benchmark::State& bstate, const Solution& sol, const Size& size) {
   bstate.SetLabel(std::to_string(size.mx) + "x" + std::to_string(size.my));
 }
 
-void run(benchmark::State& bstate, const Problem& problem, const Size& size) {
-  State state;
-  Solution sol = solve(problem, state);  // builds and caches the operators
+void run(benchmark::State& bstate, const model::PatchProblem& problem, const Size& size) {
+  PatchSolver state;
+  Solution sol = state.solve(problem);  // builds and caches the operators
   for (auto _ : bstate) {
-    sol = solve(problem, state);
+    sol = state.solve(problem);
     benchmark::DoNotOptimize(sol.totals.fx);
   }
   report(bstate, sol, size);
@@ -72,13 +73,13 @@ void BM_SteadyRolling(benchmark::State& bstate) {
 
 void BM_SteadyRollingForcesPrescribed(benchmark::State& bstate) {
   const Size size = sizes[bstate.range(0)];
-  Problem creep = tangential_case(size, 3);
-  State probe;
-  const Solution reference = solve(creep, probe);
-  Problem forces = creep;
-  forces.digits.f = 2;
-  forces.kinematics.fx_rel = reference.totals.fx / (0.3 * reference.totals.fn);
-  forces.kinematics.fy_rel = reference.totals.fy / (0.3 * reference.totals.fn);
+  model::PatchProblem creep = tangential_case(size, 3);
+  PatchSolver probe;
+  const Solution reference = probe.solve(creep);
+  model::PatchProblem forces = creep;
+  forces.tangential.prescribed = model::TangentialPrescribed::Forces;
+  forces.tangential.force_x_over_mu_fn = reference.totals.fx / (0.3 * reference.totals.fn);
+  forces.tangential.force_y_over_mu_fn = reference.totals.fy / (0.3 * reference.totals.fn);
   run(bstate, forces, size);
 }
 

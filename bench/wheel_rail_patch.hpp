@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "rollcontact/problem.hpp"
+#include "rollcontact/model/patch_problem.hpp"
 
 namespace rollcontact::bench {
 
@@ -19,22 +19,19 @@ inline double profile_scale1(double y) {
   return y < 0.0 ? y * y / 1400.0 - 2.0e-5 * y * y * y : y * y / 2200.0 + 4.0e-5 * y * y * y;
 }
 
-inline Problem wheel_rail_patch(int mx, int my, double scale) {
-  Problem p;
-  p.digits.t = 0;
-  p.digits.n = 0;  // approach prescribed
-  p.digits.o = 1;
-  p.solver.maxgs = 999;
-  p.solver.eps = 1e-5;
-  p.materials.poiss1 = p.materials.poiss2 = 0.28;
-  p.materials.gg1 = p.materials.gg2 = 82000.0;
-  p.kinematics.pen = 0.017 * scale * scale;  // ≈ 3.1k of 5.75k elements in contact at s = 1
+inline model::PatchProblem wheel_rail_patch(int mx, int my, double scale) {
+  model::PatchProblem p;
+  p.normal.kind = model::NormalLoadKind::Approach;
+  p.solver.max_inner_iterations = 999;
+  p.solver.tolerance = 1e-5;
+  p.bodies.body1 = p.bodies.body2 = {0.28, 82000.0};
+  p.normal.approach_mm = 0.017 * scale * scale;  // ≈ 3.1k of 5.75k elements in contact at s = 1
   p.potential.ipotcn = 1;
   p.potential.mx = mx;
   p.potential.my = my;
   const double dx = 0.1, dy = 0.1;
   p.potential.values = {-0.5 * mx * dx, -0.5 * my * dy, dx, dy};
-  UndeformedDistance& g = p.geometry;
+  model::UndeformedDistance& g = p.gap;
   g.ibase = 2;
   g.iplan = 1;
   const int nn = 2 * my + 1;

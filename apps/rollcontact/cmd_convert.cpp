@@ -36,7 +36,7 @@ int convert(const ConvertSettings& s) {
                      "convert needs one .toml and one .inp file (e.g. convert case.inp "
                      "case.toml, or convert case.toml case.inp)");
   }
-  const std::vector<Problem> problems =
+  const std::vector<format::CaseRecord> problems =
       is_toml(in) ? format::read_toml_file(in) : format::read_inp_file(in);
   if (is_toml(out)) {
     format::write_toml_file(out, problems);
@@ -47,7 +47,7 @@ int convert(const ConvertSettings& s) {
     fmt::print("converted {} case{} from {} to {}\n", problems.size(),
                problems.size() == 1 ? "" : "s", in.string(), out.string());
     // Overrides applied while reading change what the output says; the user should know.
-    for (const Problem& p : problems)
+    for (const format::CaseRecord& p : problems)
       for (const std::string& w : p.source.warnings)
         fmt::print(stderr, "rollcontact: warning: case {}: {}\n", p.case_number, w);
   }

@@ -1,15 +1,35 @@
 #pragma once
-// Exceptions thrown by the rollcontact library. Everything derives from rollcontact::Error.
+// Exceptions thrown by the rollcontact library. Everything derives from rollcontact::Error, and
+// every exception type carries the error code that a C interface returns for it (CONTACT's codes,
+// spec/library-api.md §3.5), so that the C layer never has to guess.
 
 #include <stdexcept>
 #include <string>
 
 namespace rollcontact {
 
+/// Error codes as CONTACT's library returns them (spec/library-api.md §3.5). 0 is success.
+enum class ErrorCode : int {
+  Ok = 0,
+  Search = -25,          ///< CNTC_err_search: contact search failed
+  TotalForce = -26,      ///< CNTC_err_ftot: total-force iteration failed
+  Normal = -27,          ///< CNTC_err_norm: normal problem did not converge
+  Tangential = -28,      ///< CNTC_err_tang: tangential problem did not converge
+  Tolerance = -29,       ///< CNTC_err_tol: stopped with the residual above the tolerance
+  Patch = -31,           ///< CNTC_err_icp: invalid result element / contact patch
+  Profile = -32,         ///< CNTC_err_profil: profile read or processing error
+  Friction = -33,        ///< CNTC_err_frclaw: invalid or missing friction data
+  Discretisation = -34,  ///< CNTC_err_discr: invalid discretisation
+  Input = -39,           ///< CNTC_err_input: input file error
+  Other = -99,           ///< CNTC_err_other: unspecified
+};
+
 /// Base class of all rollcontact exceptions.
 class Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  /// The code a C interface returns for this error.
+  virtual ErrorCode code() const noexcept { return ErrorCode::Other; }
 };
 
 /// Bad input: carries the file, 1-based line (0 = unknown) and the offending text.
@@ -27,6 +47,7 @@ class InputError : public Error {
   int line() const noexcept { return line_; }
   const std::string& message() const noexcept { return message_; }
   const std::string& offending() const noexcept { return offending_; }
+  ErrorCode code() const noexcept override { return ErrorCode::Input; }
 
  private:
   static std::string compose(const std::string& file, int line, const std::string& message,
@@ -50,12 +71,22 @@ class InputError : public Error {
 class ProblemError : public Error {
  public:
   using Error::Error;
+  ErrorCode code() const noexcept override { return ErrorCode::Other; }
+};
+
+/// The potential contact area or the undeformed distance is inadmissible (no element left, a
+/// grid too large or too fine, inconsistent geometry data).
+class GeometryError : public ProblemError {
+ public:
+  using ProblemError::ProblemError;
+  ErrorCode code() const noexcept override { return ErrorCode::Discretisation; }
 };
 
 /// A solver failed to converge and the caller asked for strictness.
 class SolverError : public Error {
  public:
   using Error::Error;
+  ErrorCode code() const noexcept override { return ErrorCode::Tolerance; }
 };
 
 /// A feature that exists in CONTACT but is not implemented (yet) in rollcontact.

@@ -1,10 +1,12 @@
 #pragma once
-// The entry point of the numerics: solve one Problem, remembering what a sequence needs in State.
+// The solver API: a PatchSolver solves one contact patch (model::PatchProblem) after another,
+// keeping what a sequence needs — cached influence operators and FFT plans, and the previous
+// solution (transient rolling, warm starts).
 
 #include <memory>
 
 #include "rollcontact/fft_options.hpp"
-#include "rollcontact/problem.hpp"
+#include "rollcontact/model/patch_problem.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact {
@@ -15,33 +17,33 @@ struct SolveOptions {
   FftPlanning fft_planning = FftPlanning::Estimate;
 };
 
-/// What a sequence of cases remembers: cached influence coefficients and FFT plans, the previous
-/// solution (for P=0 continuation and warm starts). One State per thread; not shared.
-class State {
+/// Solves patch problems one after another. One PatchSolver per sequence (for CONTACT inputs:
+/// per result element) and per thread: it is not thread-safe, but independent solvers may run
+/// in different threads.
+class PatchSolver {
  public:
-  State();
-  explicit State(SolveOptions options);
-  ~State();
-  State(State&&) noexcept;
-  State& operator=(State&&) noexcept;
-  State(const State&) = delete;
-  State& operator=(const State&) = delete;
+  explicit PatchSolver(SolveOptions options = {});
+  ~PatchSolver();
+  PatchSolver(PatchSolver&&) noexcept;
+  PatchSolver& operator=(PatchSolver&&) noexcept;
+  PatchSolver(const PatchSolver&) = delete;
+  PatchSolver& operator=(const PatchSolver&) = delete;
+
+  /// Solves one patch. problem.sequence says whether it continues from the previous solution and
+  /// whether it becomes the previous one. Throws GeometryError or ProblemError for inadmissible
+  /// data; a solver that does not converge returns solution.solver.converged == false (never a
+  /// silent wrong answer).
+  Solution solve(const model::PatchProblem& problem);
+
+  /// Forgets the previous solution (the cached operators stay).
+  void reset_sequence() noexcept;
 
   const SolveOptions& options() const noexcept;
-  struct Impl;
-  Impl& impl() noexcept { return *impl_; }
+
+  struct Impl;  ///< cached operators and the previous solution (src/solve/state_impl.hpp)
 
  private:
   std::unique_ptr<Impl> impl_;
 };
-
-/// Solves one case. Throws ProblemError for inadmissible data and NotSupportedError for features
-/// that are not implemented; a solver that does not converge returns solution.solver.converged ==
-/// false (never a silent wrong answer).
-Solution solve(const Problem& problem, State& state);
-
-/// Throws NotSupportedError naming the digit and value when the problem uses a feature that
-/// solve() does not implement yet; returns normally otherwise.
-void check_supported(const Problem& problem);
 
 }  // namespace rollcontact

@@ -108,61 +108,63 @@ TableCreepages table_creepages(const TableCase& tc) {
   return cr;
 }
 
-Problem table_problem(const TableCase& tc, const TableSettings& s) {
+model::PatchProblem table_problem(const TableCase& tc, const TableSettings& s) {
   if (s.mx < 5) throw InputError("--mx", 0, fmt::format("must be at least 5, got {}", s.mx));
   const TableCreepages cr = table_creepages(tc);
-  Problem p;
-  p.case_number = tc.number;
-  p.digits.p = 2;  // every case on its own: results independent of the order of solution
-  p.digits.b = effective_bound(s);
-  p.digits.t = 3;
-  p.digits.n = 1;
-  p.digits.f = 0;
-  p.digits.o = 0;
-  p.solver.eps = s.eps;
-  p.kinematics.fn = table_fn;
-  p.kinematics.cksi = cr.cksi;
-  p.kinematics.ceta = cr.ceta;
-  p.kinematics.cphi = cr.cphi;
-  p.kinematics.veloc = table_veloc;
-  p.kinematics.chi = 0.0;
-  p.friction.fstat = p.friction.fkin = table_mu;
-  p.materials.poiss1 = p.materials.poiss2 = table_nu;
-  p.materials.gg1 = p.materials.gg2 = table_g;
+  model::PatchProblem p;
+  // Every case on its own: results independent of the order of solution.
+  p.sequence.continue_previous = false;
+  const int bound = effective_bound(s);
+  p.normal.pressure = bound == 2   ? model::PressureModel::EllipticHertzian
+                      : bound == 3 ? model::PressureModel::ParabolicHertzian
+                                   : model::PressureModel::ExactHalfSpace;
+  p.normal.kind = model::NormalLoadKind::Force;
+  p.normal.force_N = table_fn;
+  p.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.tangential.prescribed = model::TangentialPrescribed::Creepages;
+  p.tangential.creepage = {cr.cksi, cr.ceta, cr.cphi};
+  p.solver.tolerance = s.eps;
+  p.rolling.velocity_mm_per_s = table_veloc;
+  p.rolling.direction_rad = 0.0;
+  p.friction = {table_mu, table_mu};
+  p.bodies.body1 = p.bodies.body2 = {table_nu, table_g};
   p.potential.ipotcn = -3;
   p.potential.mx = p.potential.my = s.mx;
   // mx − 4 elements over each axis of the Hertz ellipse, two free columns/rows on either side.
   const double scale = static_cast<double>(s.mx) / static_cast<double>(s.mx - 4);
   p.potential.values = {tc.a, tc.b, scale, 0.0};
   // Steady rolling on the contact-fixed grid: one element per step.
-  p.kinematics.dq = 2.0 * scale * tc.a / s.mx;
+  p.rolling.step_mm = 2.0 * scale * tc.a / s.mx;
+  // No slope reduction of Modified Fastsim: k0 = α∞ = β = 1.
   switch (s.method) {
     case TableMethod::Exact:
-      p.digits.m = 0;
+      p.bodies.compliance = model::TangentialCompliance::ExactHalfSpace;
       break;
     case TableMethod::Fastsim1: {
-      p.digits.m = 2;
+      p.bodies.compliance = model::TangentialCompliance::FastsimOneFlexibility;
       const auto coef = simplified::kalker_coefficients(tc.a_over_b, table_nu);
       const auto l = simplified::kalker_flexibilities({tc.a, tc.b}, coef, table_g);
       // One flexibility for all three creepages: the plain mean of Kalker's L1, L2, L3.
-      p.materials.model_params = {(l.l1 + l.l2 + l.l3) / 3.0, 1.0, 1.0, 1.0};
+      p.bodies.simplified = {(l.l1 + l.l2 + l.l3) / 3.0, 1.0, 1.0, 1.0};
       break;
     }
     case TableMethod::Fastsim3:
     case TableMethod::FaStrip:
-      p.digits.m = s.method == TableMethod::Fastsim3 ? 3 : 5;
-      p.materials.model_params = {1.0, 1.0, 1.0, 0.0};  // K0_MF ALFAMF BETAMF: no slope reduction
+      p.bodies.compliance = s.method == TableMethod::Fastsim3
+                                ? model::TangentialCompliance::FastsimThreeFlexibilities
+                                : model::TangentialCompliance::FaStrip;
+      p.bodies.simplified = {0.0, 1.0, 1.0, 1.0};
       break;
   }
   return p;
 }
 
-TableRow solve_table_case(const TableCase& tc, const TableSettings& s, State& state) {
+TableRow solve_table_case(const TableCase& tc, const TableSettings& s, PatchSolver& solver) {
   TableRow row;
   row.tc = tc;
   try {
-    const Problem p = table_problem(tc, s);
-    const Solution sol = solve(p, state);
+    const model::PatchProblem p = table_problem(tc, s);
+    const Solution sol = solver.solve(p);
     const double mufn = table_mu * sol.totals.fn;
     const double c = std::sqrt(tc.a * tc.b);
     row.fx_rel = sol.totals.fx / mufn;
@@ -200,9 +202,9 @@ std::vector<TableRow> run_table(std::span<const TableCase> cases, const TableSet
         try {
           // Round-robin: neighbouring cases (same ellipse, same grid) on different threads,
           // so every thread keeps its cached influence coefficients for 644 cases in a row.
-          State state;
+          PatchSolver solver;
           for (std::size_t i = t; i < n; i += nthreads) {
-            rows[i] = solve_table_case(cases[i], s, state);
+            rows[i] = solve_table_case(cases[i], s, solver);
             done.fetch_add(1);
             const std::lock_guard<std::mutex> lock(mutex);
             cv.notify_one();

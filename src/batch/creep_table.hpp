@@ -14,7 +14,6 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
 #include "rollcontact/solve.hpp"
 
 namespace rollcontact::batch {
@@ -70,11 +69,12 @@ struct TableCreepages {
 };
 TableCreepages table_creepages(const TableCase& tc);
 
-/// The module-3 Problem of a case: IPOTCN = −3 (semi-axes), mx × mx elements over
-/// mx/(mx−4) times the Hertz ellipse, T=3 steady rolling, N=1, P=2 (no dependence on earlier
-/// cases). fastsim1 uses one flexibility L = (L1+L2+L3)/3 of Kalker's three; fastsim3 and
-/// fastrip run with K0_MF = ALFAMF = 1 (original, not slope-reduced, Fastsim).
-Problem table_problem(const TableCase& tc, const TableSettings& s);
+/// The patch problem of a case: a Hertzian potential contact from the semi-axes (IPOTCN = −3),
+/// mx × mx elements over mx/(mx−4) times the Hertz ellipse, steady rolling, normal force
+/// prescribed, a new sequence (no dependence on earlier cases). fastsim1 uses one flexibility L =
+/// (L1+L2+L3)/3 of Kalker's three; fastsim3 and fastrip run with K0_MF = ALFAMF = 1 (original, not
+/// slope-reduced, Fastsim).
+model::PatchProblem table_problem(const TableCase& tc, const TableSettings& s);
 
 /// Result of one case.
 struct TableRow {
@@ -85,11 +85,11 @@ struct TableRow {
   std::string message;    ///< why not converged (not written to the CSV)
 };
 
-/// Solves one case with `state` (one State per thread). Solver errors do not throw: they give
-/// converged = false with the message.
-TableRow solve_table_case(const TableCase& tc, const TableSettings& s, State& state);
+/// Solves one case with `solver` (one PatchSolver per thread). Solver errors do not throw: they
+/// give converged = false with the message.
+TableRow solve_table_case(const TableCase& tc, const TableSettings& s, PatchSolver& solver);
 
-/// Solves `cases` on `threads` threads (each with its own State; case i of the list goes to
+/// Solves `cases` on `threads` threads (each with its own PatchSolver; case i of the list goes to
 /// thread i mod threads, so the split is deterministic) and returns the rows in the order of
 /// `cases`. `progress(done)` is called from the calling thread every ~0.2 s and at the end.
 std::vector<TableRow> run_table(std::span<const TableCase> cases, const TableSettings& s,

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "format/inp/inp_reader.hpp"
+#include "format/inp/to_model.hpp"
 #include "format/report/json_writer.hpp"
 #include "format/report/mat_writer.hpp"
 #include "format/report/report_writer.hpp"
@@ -17,25 +18,52 @@
 
 namespace rollcontact::batch {
 
-RunResult run_problems(const std::vector<Problem>& problems, const std::string& input_name,
-                       const std::filesystem::path& output_stem, const RunOptions& options) {
+namespace {
+
+/// Message prefix that lets a user find the case: "file:line: case N: " (parts when known).
+std::string case_context(const format::CaseRecord& r) {
+  std::string s;
+  if (!r.source.file.empty()) {
+    s += r.source.file;
+    if (r.source.first_line > 0) s += ":" + std::to_string(r.source.first_line);
+    s += ": ";
+  }
+  s += "case " + std::to_string(r.case_number) + ": ";
+  return s;
+}
+
+}  // namespace
+
+Solution solve_case(const format::CaseRecord& record, PatchSolver& solver) {
+  const model::PatchProblem problem = format::to_patch_problem(record);
+  try {
+    return solver.solve(problem);
+  } catch (const GeometryError& e) {
+    // The geometry says what is wrong; the record knows where the case came from.
+    throw GeometryError(case_context(record) + e.what());
+  }
+}
+
+RunResult run_problems(const std::vector<format::CaseRecord>& problems,
+                       const std::string& input_name, const std::filesystem::path& output_stem,
+                       const RunOptions& options) {
   RunResult result;
   std::ostringstream report;
   format::write_report_banner(report);
   nlohmann::json cases = nlohmann::json::array();
-  std::map<int, State> states;  // one State per result element (REID)
+  std::map<int, PatchSolver> solvers;  // one PatchSolver (sequence) per result element (REID)
 
   for (std::size_t k = 0; k < problems.size(); ++k) {
-    const Problem& problem = problems[k];
+    const format::CaseRecord& problem = problems[k];
     CaseOutcome outcome;
     outcome.problem = problem;
     if (problem.digits.r == 2 || problem.digits.r == 3) {
       outcome.skipped = true;
     } else {
-      auto [it, inserted] = states.try_emplace(problem.result_element, options.solve);
+      auto [it, inserted] = solvers.try_emplace(problem.result_element, options.solve);
       try {
         if (!problem.source.case_error.empty()) throw ProblemError(problem.source.case_error);
-        outcome.solution = solve(problem, it->second);
+        outcome.solution = solve_case(problem, it->second);
         outcome.solved = true;
         // The reader's consistency overrides are part of what the user must see for this case.
         auto& warnings = outcome.solution.warnings;
@@ -49,7 +77,7 @@ RunResult run_problems(const std::vector<Problem>& problems, const std::string& 
       }
       if (!outcome.error.empty()) {
         ++result.failed;
-        const SourceInfo& src = problem.source;
+        const format::SourceInfo& src = problem.source;
         if (!src.file.empty())
           outcome.error = src.file + ":" + std::to_string(src.first_line) + ": " + outcome.error;
       }
@@ -82,8 +110,8 @@ namespace {
 
 /// Stand-in for a module-1 case until the wheel/rail solver exists: identity, digits and source
 /// of the case, with a per-case error so that the run reports it and continues.
-Problem not_supported_stand_in(const WheelRailProblem& wr) {
-  Problem p;
+format::CaseRecord not_supported_stand_in(const format::WheelRailRecord& wr) {
+  format::CaseRecord p;
   p.case_number = wr.case_number;
   p.result_element = wr.result_element;
   p.digits = wr.digits;
@@ -93,15 +121,15 @@ Problem not_supported_stand_in(const WheelRailProblem& wr) {
   return p;
 }
 
-std::vector<Problem> read_problems(const std::filesystem::path& input) {
+std::vector<format::CaseRecord> read_problems(const std::filesystem::path& input) {
   // TOML case files (docs/case-files.md) by extension; everything else is CONTACT .inp.
   if (input.extension() == ".toml") return format::read_toml_file(input);
-  std::vector<Problem> problems;
+  std::vector<format::CaseRecord> problems;
   for (format::InputCase& c : format::read_input_cases(input)) {
-    if (auto* p = std::get_if<Problem>(&c)) {
+    if (auto* p = std::get_if<format::CaseRecord>(&c)) {
       problems.push_back(std::move(*p));
     } else {
-      problems.push_back(not_supported_stand_in(std::get<WheelRailProblem>(c)));
+      problems.push_back(not_supported_stand_in(std::get<format::WheelRailRecord>(c)));
     }
   }
   return problems;
@@ -110,7 +138,7 @@ std::vector<Problem> read_problems(const std::filesystem::path& input) {
 }  // namespace
 
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
-  const std::vector<Problem> problems = read_problems(input);
+  const std::vector<format::CaseRecord> problems = read_problems(input);
   std::filesystem::path dir = options.output_dir.empty() ? input.parent_path() : options.output_dir;
   if (!options.output_dir.empty()) std::filesystem::create_directories(dir);
   const std::filesystem::path stem = dir / input.stem();

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 #include "rollcontact/solution.hpp"
 #include "rollcontact/solve.hpp"
 
@@ -15,7 +15,7 @@ namespace rollcontact::batch {
 
 /// Result of one case of a run.
 struct CaseOutcome {
-  Problem problem;
+  format::CaseRecord problem;
   bool solved = false;   ///< a Solution exists
   Solution solution;     ///< valid when solved
   std::string error;     ///< non-empty for "error" (not supported, inadmissible data)
@@ -35,12 +35,18 @@ struct RunResult {
   int failed = 0;  ///< errors + not converged
 };
 
-/// Reads `input`, solves each case in order (one State per result element), writes
+/// Solves one case of an input file with `solver` (the sequence of its result element): the
+/// record becomes a model::PatchProblem (NotSupportedError for what is not implemented), and
+/// geometry errors get the file, line and case number in front.
+Solution solve_case(const format::CaseRecord& record, PatchSolver& solver);
+
+/// Reads `input`, solves each case in order (one PatchSolver per result element), writes
 /// <name>.out and <name>.json atomically. Throws InputError (nothing written) for bad input.
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options);
 
 /// Same for problems already read; `input_name` names the outputs.
-RunResult run_problems(const std::vector<Problem>& problems, const std::string& input_name,
-                       const std::filesystem::path& output_stem, const RunOptions& options);
+RunResult run_problems(const std::vector<format::CaseRecord>& problems,
+                       const std::string& input_name, const std::filesystem::path& output_stem,
+                       const RunOptions& options);
 
 }  // namespace rollcontact::batch

@@ -11,24 +11,12 @@ namespace rollcontact::geometry {
 
 namespace {
 
-/// Message prefix that lets a user find the case: "file:line: case N: " (parts when known).
-std::string case_context(const Problem& p) {
-  std::string s;
-  if (!p.source.file.empty()) {
-    s += p.source.file;
-    if (p.source.first_line > 0) s += ":" + std::to_string(p.source.first_line);
-    s += ": ";
-  }
-  s += "case " + std::to_string(p.case_number) + ": ";
-  return s;
-}
-
-Discretisation build(const Problem& problem, const CombinedMaterial& material) {
-  const PotentialContact& pot = problem.potential;
+Discretisation build(const model::PatchProblem& problem, const CombinedMaterial& material) {
+  const model::PotentialContact& pot = problem.potential;
   Discretisation d;
   if (!pot.hertzian()) {
     d.grid = rectangular_grid(pot);
-    d.h = undeformed_distance(d.grid, problem.geometry);
+    d.h = undeformed_distance(d.grid, problem.gap);
     return d;
   }
 
@@ -37,9 +25,9 @@ Discretisation build(const Problem& problem, const CombinedMaterial& material) {
     throw ProblemError("Hertzian potential contact needs E* = G/(1-nu) > 0 (G=" +
                        std::to_string(material.g) + ", nu=" + std::to_string(material.nu) + ")");
   }
-  const bool force = problem.digits.n == 1;
+  const bool force = problem.normal.kind == model::NormalLoadKind::Force;
   const HertzLoad load = force ? HertzLoad::Force : HertzLoad::Approach;
-  const double value = force ? problem.kinematics.fn : problem.kinematics.pen;
+  const double value = force ? problem.normal.force_N : problem.normal.approach_mm;
   d.hertz = hertz_for_potential(pot, load, value, estar);
   d.grid = hertzian_grid(pot, d.hertz);
 
@@ -103,12 +91,13 @@ HertzReport hertz_for_potential(const PotentialContact& pot, HertzLoad load, dou
   return h;
 }
 
-Discretisation build_discretisation(const Problem& problem, const CombinedMaterial& material) {
+Discretisation build_discretisation(const model::PatchProblem& problem,
+                                    const CombinedMaterial& material) {
   try {
     return build(problem, material);
   } catch (const ProblemError& e) {
-    // Add where the case came from; the inner message says what is wrong.
-    throw ProblemError(case_context(problem) + e.what());
+    // The front end adds where the case came from (it knows the file and the case number).
+    throw GeometryError(e.what());
   }
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// From a Problem's potential-contact and geometry description to the element grid and the
+// From a patch problem's potential-contact and geometry description to the element grid and the
 // undeformed distance h per element (spec/physics.md §2, §4, §8).
 
 #include <vector>
 
 #include "geometry/hertz.hpp"
-#include "rollcontact/problem.hpp"
+#include "rollcontact/model/patch_problem.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::geometry {
@@ -13,16 +13,20 @@ namespace rollcontact::geometry {
 /// Value of h for elements excluded by the planform (never in contact).
 inline constexpr double excluded_distance = 1e30;
 
+using model::PotentialContact;
+using model::UndeformedDistance;
+
 struct Discretisation {
   Grid grid;
   std::vector<double> h;  ///< undeformed distance without approach [mm], excluded = 1e30
   HertzReport hertz;      ///< present for Hertzian IPOTCN < 0
 };
 
-/// Builds grid and undeformed distance. For Hertzian options the Hertz solution uses FN (N=1) or
-/// PEN (N=0) from the problem's kinematics and E* of `material`. Throws ProblemError when the
+/// Builds grid and undeformed distance. For Hertzian options the Hertz solution uses the normal
+/// force or the approach of problem.normal and E* of `material`. Throws GeometryError when the
 /// data are inadmissible (e.g. every element excluded, MX·MY too large).
-Discretisation build_discretisation(const Problem& problem, const CombinedMaterial& material);
+Discretisation build_discretisation(const model::PatchProblem& problem,
+                                    const CombinedMaterial& material);
 
 /// Largest admissible number of elements MX·MY and smallest element size DX, DY [mm].
 inline constexpr long long max_grid_elements = 2'000'000;
@@ -30,17 +34,17 @@ inline constexpr double min_element_size = 1e-8;
 
 /// Grid of the potential contact for IPOTCN 1..4 (no Hertz needed). Throws ProblemError for
 /// Hertzian or unknown IPOTCN and for grids failing validate_grid (IPOTCN 4 needs MX, MY ≥ 2).
-Grid rectangular_grid(const PotentialContact& pot);
+Grid rectangular_grid(const model::PotentialContact& pot);
 
 /// Hertz solution of a Hertzian option IPOTCN −1…−6 (−6: semi-axes a and b = (BNEG+BPOS)/2)
 /// for a prescribed FN [N] or PEN [mm]; `estar` = E* [N/mm²]. The report's scale is SCALE.
 /// 2-D options (−4, −5) need HertzLoad::Force. Throws ProblemError for inadmissible data.
-HertzReport hertz_for_potential(const PotentialContact& pot, HertzLoad load, double value,
+HertzReport hertz_for_potential(const model::PotentialContact& pot, HertzLoad load, double value,
                                 double estar);
 
 /// Grid of a Hertzian option from its Hertz solution (spec/physics.md §2): [−s·a, s·a] in x;
 /// in y [−s·b, s·b] (3-D, SDEC) or, for 2-D, MY rows of which n_int cover the strip [−b, b].
-Grid hertzian_grid(const PotentialContact& pot, const HertzReport& hertz);
+Grid hertzian_grid(const model::PotentialContact& pot, const HertzReport& hertz);
 
 /// Throws ProblemError unless 1 ≤ MX, MY, MX·MY ≤ max_grid_elements, DX, DY ≥ min_element_size
 /// and the corner is finite.
@@ -50,6 +54,7 @@ void validate_grid(const Grid& grid);
 /// centres [mm]; excluded elements get excluded_distance. Throws ProblemError for missing or
 /// inconsistent data (coefficient counts, NN < 2, DY1 ≤ 0, RM = 0, B7/B8 = 0, IBASE 9 count
 /// ≠ MX·MY, all elements excluded) and NotSupportedError for IPLAN 4.
-std::vector<double> undeformed_distance(const Grid& grid, const UndeformedDistance& geometry);
+std::vector<double> undeformed_distance(const Grid& grid,
+                                        const model::UndeformedDistance& geometry);
 
 }  // namespace rollcontact::geometry

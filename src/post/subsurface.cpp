@@ -51,8 +51,8 @@ void resize_fields(SubsurfaceResult& r) {
   }
 }
 
-SubsurfaceResult evaluate_block(const SubsurfaceBlock& block, const Solution& sol,
-                                const Materials& mat, const NodalLoads& loads) {
+SubsurfaceResult evaluate_block(const model::SubsurfaceBlock& block, const Solution& sol,
+                                const model::Bodies& bodies, const NodalLoads& loads) {
   SubsurfaceResult r;
   PointLists pts = block_points(block, sol.grid);
   r.x = std::move(pts.x);
@@ -70,8 +70,8 @@ SubsurfaceResult evaluate_block(const SubsurfaceBlock& block, const Solution& so
   for (double z : r.z) {
     const bool body1 = z >= 0.0;
     const double depth = loads.effective_depth(std::abs(z));
-    const double g = body1 ? mat.gg1 : mat.gg2;
-    const double nu = body1 ? mat.poiss1 : mat.poiss2;
+    const double g = body1 ? bodies.body1.shear_modulus_N_mm2 : bodies.body2.shear_modulus_N_mm2;
+    const double nu = body1 ? bodies.body1.poisson_ratio : bodies.body2.poisson_ratio;
     const double flip = body1 ? 1.0 : -1.0;  // R = diag(1, 1, flip)
     for (double y : r.y) {
       for (double x : r.x) {
@@ -119,14 +119,15 @@ SubsurfaceResult evaluate_block(const SubsurfaceBlock& block, const Solution& so
 
 }  // namespace
 
-std::vector<SubsurfaceResult> compute_subsurface(const Problem& problem, const Solution& solution) {
+std::vector<SubsurfaceResult> compute_subsurface(const std::vector<model::SubsurfaceBlock>& blocks,
+                                                 const model::Bodies& bodies,
+                                                 const Solution& solution) {
   std::vector<SubsurfaceResult> out;
-  if (problem.subsurface.blocks.empty()) return out;
+  if (blocks.empty()) return out;
   const NodalLoads loads(solution.grid, solution.px, solution.py, solution.pn);
-  out.reserve(problem.subsurface.blocks.size());
-  for (const SubsurfaceBlock& b : problem.subsurface.blocks) {
-    out.push_back(evaluate_block(b, solution, problem.materials, loads));
-  }
+  out.reserve(blocks.size());
+  for (const model::SubsurfaceBlock& b : blocks)
+    out.push_back(evaluate_block(b, solution, bodies, loads));
   return out;
 }
 

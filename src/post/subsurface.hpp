@@ -3,15 +3,18 @@
 
 #include <vector>
 
-#include "rollcontact/problem.hpp"
+#include "rollcontact/model/bodies.hpp"
+#include "rollcontact/model/geometry.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::post {
 
-/// Evaluates every block of problem.subsurface at the tractions of `solution` by direct
+/// Evaluates every block of `blocks` at the tractions of `solution` by direct
 /// superposition of the closed-form rectangle solutions over the loaded grid nodes (cost:
 /// points × loaded nodes). Points with z ≥ 0 use body 1 (G₁, ν₁) under the tractions as
 /// solved; z < 0 use body 2 (G₂, ν₂) under the opposite tractions. Returns one result per block.
-std::vector<SubsurfaceResult> compute_subsurface(const Problem& problem, const Solution& solution);
+std::vector<SubsurfaceResult> compute_subsurface(const std::vector<model::SubsurfaceBlock>& blocks,
+                                                 const model::Bodies& bodies,
+                                                 const Solution& solution);
 
 }  // namespace rollcontact::post

@@ -23,7 +23,7 @@ std::vector<int> range(int lo, int step, int hi) {
 
 }  // namespace
 
-PointLists block_points(const SubsurfaceBlock& block, const Grid& grid) {
+PointLists block_points(const model::SubsurfaceBlock& block, const Grid& grid) {
   PointLists p;
   auto xc = [&](int ix) { return grid.x_centre(ix); };
   auto yc = [&](int iy) { return grid.y_centre(iy); };

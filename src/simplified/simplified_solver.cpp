@@ -10,25 +10,27 @@
 
 namespace rollcontact::simplified {
 
-SimplifiedModel simplified_model(const Problem& problem) {
-  const auto& d = problem.digits;
-  const auto& mp = problem.materials.model_params;
+SimplifiedModel simplified_model(const model::PatchProblem& problem) {
+  using model::TangentialCompliance;
+  const TangentialCompliance c = problem.bodies.compliance;
+  const model::SimplifiedParameters& sp = problem.bodies.simplified;
   SimplifiedModel m;
-  m.m = d.m;
-  const std::size_t first = d.m == 2 ? 1 : 0;
-  if (d.m == 2) {
-    m.flx = mp[0];
+  m.m = c == TangentialCompliance::FastsimOneFlexibility ? 2
+        : c == TangentialCompliance::FaStrip             ? 5
+                                                         : 3;
+  if (m.m == 2) {
+    m.flx = sp.flexibility_mm3_N;
     if (!(m.flx > 0.0)) throw ProblemError("M=2: the flexibility FLX must be positive");
   }
-  m.slope = {mp[first], mp[first + 1], mp[first + 2]};
+  m.slope = {sp.k0, sp.alpha_inf, sp.beta};
   if (!(m.slope.k0 > 0.0)) throw ProblemError("Modified Fastsim: K0_MF must be positive");
   // Module 3 blends only with prescribed creepages: in the force iteration the creep curve must
   // stay one smooth function of the unknown creepage.
-  m.blend = d.m != 2 && d.f == 0;
+  m.blend = m.m != 2 && problem.tangential.prescribed == model::TangentialPrescribed::Creepages;
   return m;
 }
 
-RigidShiftParts rigid_shift_parts(const Grid& grid, const Problem& problem,
+RigidShiftParts rigid_shift_parts(const Grid& grid, const model::PatchProblem& problem,
                                   const EffectiveKinematics& kin, const Creepages& cr) {
   tangential::RigidShift full = tangential::rigid_shift(grid, problem, kin, cr.ksi, cr.eta, cr.phi);
   tangential::RigidShift base = tangential::rigid_shift(grid, problem, kin, cr.ksi, cr.eta, 0.0);

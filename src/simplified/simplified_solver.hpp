@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "rollcontact/grid.hpp"
-#include "rollcontact/problem.hpp"
+#include "rollcontact/model/patch_problem.hpp"
 #include "rollcontact/solution.hpp"
 #include "simplified/fastsim.hpp"
 #include "simplified/flexibility.hpp"
@@ -23,10 +23,10 @@ struct SimplifiedModel {
   bool blend = true;     ///< M=3,5 with prescribed creepages (F=0): blend L1..L3
 };
 
-/// The model of a Problem: M digit, Problem::materials.model_params (M=2: FLX K0 ALFA BETA;
-/// M=3,5: K0 ALFA BETA) and the F digit. Throws ProblemError for M=2 with FLX ≤ 0 and for
-/// K0_MF ≤ 0.
-SimplifiedModel simplified_model(const Problem& problem);
+/// The simplified model of a patch problem: its compliance model and parameters, and whether
+/// the creepages are prescribed (blending). Throws ProblemError for Fastsim with one
+/// flexibility ≤ 0 and for k0 ≤ 0.
+SimplifiedModel simplified_model(const model::PatchProblem& problem);
 
 /// Rigid shift per step split into the part without spin and the spin part [mm], so that the
 /// spin part can be scaled by L1/L3 and L2/L3 (physics.md §5).
@@ -34,7 +34,7 @@ struct RigidShiftParts {
   std::vector<double> wx, wy;          ///< ξ, η (and extra rigid slip) part
   std::vector<double> spin_x, spin_y;  ///< φ part
 };
-RigidShiftParts rigid_shift_parts(const Grid& grid, const Problem& problem,
+RigidShiftParts rigid_shift_parts(const Grid& grid, const model::PatchProblem& problem,
                                   const EffectiveKinematics& kin, const Creepages& cr);
 
 struct SimplifiedCase {

@@ -1,5 +1,6 @@
-// solve(): one module-3 case from Problem to Solution — geometry, normal problem, tangential
-// problem (with the force iteration and the Panagiotopoulos loop) and the totals.
+// PatchSolver::solve(): one patch from model::PatchProblem to Solution — geometry, normal
+// problem, tangential problem (with the force iteration and the Panagiotopoulos loop) and the
+// totals.
 
 #include "rollcontact/solve.hpp"
 
@@ -25,11 +26,19 @@ namespace rollcontact {
 
 namespace {
 
-[[noreturn]] void not_supported(const std::string& what) {
-  throw NotSupportedError("not supported yet: " + what);
-}
-
 using Field = std::vector<double>;
+
+/// The operator set a tangential problem needs: 1 shift, 2 transient rolling, 3 steady rolling.
+int operator_kind(model::TangentialKind kind) {
+  switch (kind) {
+    case model::TangentialKind::Shift:
+      return 1;
+    case model::TangentialKind::TransientRolling:
+      return 2;
+    default:
+      return 3;
+  }
+}
 
 /// Fields of the previous case mapped onto the current grid (same element size, integer offset);
 /// zero where the old grid did not reach (physics.md §2 "Sequences").
@@ -90,7 +99,7 @@ double norm(const Field& a) {
 /// large (h averaged over the 2×2 fine elements), solved — itself started from a coarser grid —
 /// and prolongated element-wise. Returns an empty field when the grid is too small to gain.
 /// The fine solve then starts close to its solution, with few active-set changes.
-Field coarse_grid_start(State::Impl& st, int level, const Grid& grid, const Field& h,
+Field coarse_grid_start(PatchSolver::Impl& st, int level, const Grid& grid, const Field& h,
                         normal::NormalLoad load, double value, const CombinedMaterial& material,
                         const normal::NormalSettings& settings, int& iterations) {
   constexpr std::size_t min_elements = 20000;  // below this a coarse start does not pay
@@ -138,7 +147,7 @@ Field coarse_grid_start(State::Impl& st, int level, const Grid& grid, const Fiel
 /// coarser grid) is prolongated element-wise: slipping parents give slip at the fine bound in
 /// the parent's direction, adhering parents their traction within the fine bound. Returns false
 /// (start unchanged) when the grid is too small to gain or the coarse solve fails.
-bool steady_coarse_start(State::Impl& st, int level, const tangential::TangentialSystem& sys,
+bool steady_coarse_start(PatchSolver::Impl& st, int level, const tangential::TangentialSystem& sys,
                          double shift_x, double shift_y, const CombinedMaterial& material,
                          const tangential::TangentialSettings& settings, Field& px, Field& py,
                          int& products) {
@@ -213,7 +222,7 @@ bool steady_coarse_start(State::Impl& st, int level, const tangential::Tangentia
 /// Everything the normal and tangential sub-solves of one case share.
 class CaseSolver {
  public:
-  CaseSolver(const Problem& problem, State::Impl& st, Solution& sol)
+  CaseSolver(const model::PatchProblem& problem, PatchSolver::Impl& st, Solution& sol)
       : problem_(problem), st_(st), sol_(sol), grid_(sol.grid) {}
 
   void run();
@@ -229,8 +238,8 @@ class CaseSolver {
                                                 const Field* px0, const Field* py0);
   void compute_totals(const tangential::TangentialResult* tang);
 
-  const Problem& problem_;
-  State::Impl& st_;
+  const model::PatchProblem& problem_;
+  PatchSolver::Impl& st_;
   Solution& sol_;
   const Grid& grid_;
   bool coupled_ = false;
@@ -245,8 +254,8 @@ class CaseSolver {
 
 void CaseSolver::solve_normal(const Field& px, const Field& py) {
   const std::size_t n = grid_.size();
-  const bool force_given = problem_.digits.n == 1;
-  const double load_value = force_given ? problem_.kinematics.fn : problem_.kinematics.pen;
+  const bool force_given = problem_.normal.kind == model::NormalLoadKind::Force;
+  const double load_value = force_given ? problem_.normal.force_N : problem_.normal.approach_mm;
   if (force_given && !(load_value > 0.0))
     throw ProblemError(fmt::format("normal force FN = {} must be positive", load_value));
   NormalOperators& ops = st_.normal_operators(grid_, sol_.material);
@@ -278,8 +287,8 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   }
 
   normal::NormalSettings settings;
-  settings.eps = problem_.solver.eps;
-  settings.max_iterations = problem_.solver.maxgs;
+  settings.eps = problem_.solver.tolerance;
+  settings.max_iterations = problem_.solver.max_inner_iterations;
   const normal::NormalLoad load =
       force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach;
   if (initial == nullptr) {
@@ -309,12 +318,13 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
 
 void CaseSolver::set_prescribed_pressure() {
   const HertzReport& hz = sol_.hertz;
+  const bool elliptic = problem_.normal.pressure == model::PressureModel::EllipticHertzian;
   if (!hz.present)
     throw ProblemError(
         fmt::format("prescribed pressures B={} need a Hertzian potential contact (IPOTCN < 0)",
-                    problem_.digits.b));
-  const auto shape = problem_.digits.b == 2 ? simplified::PressureShape::Elliptic
-                                            : simplified::PressureShape::Parabolic;
+                    elliptic ? 2 : 3));
+  const auto shape =
+      elliptic ? simplified::PressureShape::Elliptic : simplified::PressureShape::Parabolic;
   sol_.pn = simplified::prescribed_pressure(grid_, hz, shape, hz.fn);
   sol_.totals.pen = hz.two_dimensional ? 0.0 : hz.pen;  // 2-D Hertz has no approach
 }
@@ -327,7 +337,7 @@ double CaseSolver::total_normal_force() const {
 }
 
 tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ceta, double cphi) {
-  const int t = problem_.digits.t;
+  const model::TangentialKind kind = problem_.tangential.kind;
   simplified::SimplifiedCase c;
   c.grid = grid_;
   c.pn = sol_.pn;
@@ -342,10 +352,10 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
   const simplified::RigidShiftParts shift =
       simplified::rigid_shift_parts(grid_, problem_, sol_.kinematics, c.creepages);
   c.shift = &shift;
-  c.steady = t == 3;
+  c.steady = kind == model::TangentialKind::SteadyRolling;
   c.chi = sol_.kinematics.chi;
   Field ux_prev, uy_prev;
-  if (t == 2 && prev_.present) {
+  if (kind == model::TangentialKind::TransientRolling && prev_.present) {
     ux_prev = simplified::upstream_field(grid_, prev_.ux, c.chi, sol_.kinematics.dq);
     uy_prev = simplified::upstream_field(grid_, prev_.uy, c.chi, sol_.kinematics.dq);
     c.ux_prev = ux_prev;
@@ -377,7 +387,7 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
                                                           const Field* px0, const Field* py0) {
   using namespace tangential;
   const std::size_t n = grid_.size();
-  const int t = problem_.digits.t;
+  const model::TangentialKind kind = problem_.tangential.kind;
   TangentialSystem sys;
   sys.grid = grid_;
   sys.chi = sol_.kinematics.chi;
@@ -402,7 +412,7 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
       sys.by[i] += uy[i];
     }
   }
-  if (t <= 2 && prev_.present) {
+  if (kind != model::TangentialKind::SteadyRolling && prev_.present) {
     // Displacement of the same particles at the previous time.
     Field ux(n), uy(n);
     const double* in[3] = {prev_.px.data(), prev_.py.data(), prev_.pn.data()};
@@ -417,34 +427,35 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
   TangentialSettings settings;
   // With prescribed forces the Newton loop stops at |ΔF/(μFN)| ≤ EPS; the tangential solutions
   // it differentiates must be an order more accurate, or their noise stalls it.
-  settings.eps = problem_.digits.f == 0 ? problem_.solver.eps : 0.1 * problem_.solver.eps;
-  settings.max_iterations = problem_.solver.maxgs;
-  TangentialSolverKind kind = select_solver(problem_.digits);
-  if (kind == TangentialSolverKind::SteadyGS) {
+  const double eps = problem_.solver.tolerance;
+  settings.eps =
+      problem_.tangential.prescribed == model::TangentialPrescribed::Creepages ? eps : 0.1 * eps;
+  settings.max_iterations = problem_.solver.max_inner_iterations;
+  TangentialSolverKind method = select_solver(problem_);
+  if (method == TangentialSolverKind::SteadyGS) {
     // SteadyGS needs a free trailing column (the inflow of the previous-time field).
     const int trailing = std::cos(sys.chi) > 0.0 ? 0 : grid_.mx - 1;
     bool blocked = false;
     for (int iy = 0; iy < grid_.my && !blocked; ++iy)
       blocked = sys.contact[grid_.index(trailing, iy)] != 0;
     if (blocked) {
-      kind = TangentialSolverKind::ConvexGS;
+      method = TangentialSolverKind::ConvexGS;
       notes_.push_back("contact in the trailing column: using ConvexGS instead of SteadyGS");
     }
   }
-  if (problem_.digits.g == 2 || problem_.digits.g == 3) {
-    if (problem_.solver.omega_h > 0.0) settings.omega_h = problem_.solver.omega_h;
-    if (problem_.solver.omega_s > 0.0) settings.omega_s = problem_.solver.omega_s;
-  }
+  if (problem_.solver.relaxation_adhesion > 0.0)
+    settings.omega_h = problem_.solver.relaxation_adhesion;
+  if (problem_.solver.relaxation_slip > 0.0) settings.omega_s = problem_.solver.relaxation_slip;
   // CONTACT's TangCG (T=1,2) and SteadyGS (T=3) roles are both taken by the semismooth Newton
   // iteration (docs/decisions.md); ConvexGS stays the Gauss–Seidel iteration. Should Newton
   // fail, the preconditioned Jacobi iteration (and after it ConvexGS) starts from its result.
-  if (kind == TangentialSolverKind::ConvexGS) return solve_convex_gs(sys, settings, px0, py0);
+  if (method == TangentialSolverKind::ConvexGS) return solve_convex_gs(sys, settings, px0, py0);
   Field start_x, start_y;
   const bool cold =
       (px0 == nullptr ||
        std::all_of(px0->begin(), px0->end(), [](double v) { return v == 0.0; })) &&
       (py0 == nullptr || std::all_of(py0->begin(), py0->end(), [](double v) { return v == 0.0; }));
-  if (t == 3 && cold) {
+  if (kind == model::TangentialKind::SteadyRolling && cold) {
     start_x.assign(n, 0.0);
     start_y.assign(n, 0.0);
     int coarse_products = 0;
@@ -465,33 +476,39 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
 
 void CaseSolver::run() {
   const std::size_t n = grid_.size();
-  const ControlDigits& d = problem_.digits;
-  prescribed_ = d.b == 2 || d.b == 3;
-  simplified_ = d.m == 2 || d.m == 3 || d.m == 5;
+  const model::TangentialKind kind = problem_.tangential.kind;
+  const bool tangential = kind != model::TangentialKind::None;
+  const model::TangentialPrescribed prescribed = problem_.tangential.prescribed;
+  const model::Creepages& creepage = problem_.tangential.creepage;
+  prescribed_ = problem_.normal.pressure != model::PressureModel::ExactHalfSpace;
+  simplified_ = problem_.bodies.compliance != model::TangentialCompliance::ExactHalfSpace;
   // The simplified theory has no normal-tangential coupling.
   coupled_ = !simplified_ && std::abs(sol_.material.k) >= 1e-6;
-  mu_ = problem_.friction.fstat;
+  mu_ = problem_.friction.static_coefficient;
   sol_.kinematics = tangential::effective_kinematics(problem_, grid_, &notes_);
 
   const Solution* prev =
-      d.p != 2 && st_.previous && !st_.previous->pn.empty() ? &*st_.previous : nullptr;
+      problem_.sequence.continue_previous && st_.previous && !st_.previous->pn.empty()
+          ? &*st_.previous
+          : nullptr;
   prev_ = map_previous(prev, grid_);
-  if (d.t >= 1 && !simplified_) {
+  if (tangential && !simplified_) {
     const auto& k = sol_.kinematics;
-    tops_ = &st_.tangential_operators(grid_, sol_.material, d.t, k.dq * std::cos(k.chi),
-                                      k.dq * std::sin(k.chi));
+    tops_ = &st_.tangential_operators(grid_, sol_.material, operator_kind(kind),
+                                      k.dq * std::cos(k.chi), k.dq * std::sin(k.chi));
   }
 
   Field px(n, 0.0), py(n, 0.0);
   // Warm start of the tangential tractions from the previous case on the same grid.
-  if (prev_.present && d.t >= 1) {
+  if (prev_.present && tangential) {
     px = prev_.px;
     py = prev_.py;
   }
-  const int max_outer =
-      coupled_ && !prescribed_ && d.t >= 1 ? std::max(1, problem_.solver.maxout) : 1;
+  const int max_outer = coupled_ && !prescribed_ && tangential
+                            ? std::max(1, problem_.solver.max_normal_tangential_passes)
+                            : 1;
   tangential::TangentialResult tang;
-  ForceIterationResult creep{problem_.kinematics.cksi, problem_.kinematics.ceta, 0, true, {}, {}};
+  ForceIterationResult creep{creepage.longitudinal, creepage.lateral, 0, true, {}, {}};
   int outer = 0;
   for (outer = 1; outer <= max_outer; ++outer) {
     const Field pn_old = sol_.pn.empty() ? Field(n, 0.0) : sol_.pn, px_old = px, py_old = py;
@@ -500,10 +517,10 @@ void CaseSolver::run() {
       set_prescribed_pressure();
     else
       solve_normal(max_outer > 1 ? px : Field(n, 0.0), max_outer > 1 ? py : Field(n, 0.0));
-    if (d.t == 0) break;
+    if (!tangential) break;
     auto evaluate = [&](double cksi, double ceta) {
-      tang = simplified_ ? solve_simplified(cksi, ceta, problem_.kinematics.cphi)
-                         : solve_tangential(cksi, ceta, problem_.kinematics.cphi, &px, &py);
+      tang = simplified_ ? solve_simplified(cksi, ceta, creepage.spin_rad_per_mm)
+                         : solve_tangential(cksi, ceta, creepage.spin_rad_per_mm, &px, &py);
       sol_.solver.tangential_iterations += tang.iterations;
       px = tang.px;
       py = tang.py;
@@ -517,20 +534,21 @@ void CaseSolver::run() {
       return std::array<double, 2>{fx * grid_.element_area() * scale,
                                    fy * grid_.element_area() * scale};
     };
-    if (d.f == 0) {
-      evaluate(problem_.kinematics.cksi, problem_.kinematics.ceta);
+    if (prescribed == model::TangentialPrescribed::Creepages) {
+      evaluate(creepage.longitudinal, creepage.lateral);
     } else {
+      const bool both = prescribed == model::TangentialPrescribed::Forces;
       ForceIterationInput in;
-      in.unknowns = d.f;
-      in.target_x = problem_.kinematics.fx_rel;
-      in.target_y = problem_.kinematics.fy_rel;
-      in.fixed_eta = problem_.kinematics.ceta;
-      const bool restart = d.i == 0 || d.i == 2 || !prev;
+      in.unknowns = both ? 2 : 1;
+      in.target_x = problem_.tangential.force_x_over_mu_fn;
+      in.target_y = problem_.tangential.force_y_over_mu_fn;
+      in.fixed_eta = creepage.lateral;
+      const bool restart = !problem_.sequence.force_iteration_from_previous || !prev;
       in.start_ksi = restart ? 1e-6 : prev->totals.creep_x + prev->totals.shift_x;
-      in.start_eta = d.f == 2 ? (restart ? 0.0 : prev->totals.creep_y + prev->totals.shift_y)
-                              : problem_.kinematics.ceta;
-      in.eps = problem_.solver.eps;
-      in.max_iterations = problem_.solver.maxnr;
+      in.start_eta =
+          both ? (restart ? 0.0 : prev->totals.creep_y + prev->totals.shift_y) : creepage.lateral;
+      in.eps = problem_.solver.tolerance;
+      in.max_iterations = problem_.solver.max_newton_iterations;
       creep = force_iteration(in, evaluate);
       sol_.solver.newton_iterations += creep.iterations;
       sol_.sensitivities.dfx_dksi = creep.jacobian[0];
@@ -552,7 +570,7 @@ void CaseSolver::run() {
                   std::pow(rms_change(py, py_old), 2));
     const double size =
         std::sqrt(std::pow(norm(sol_.pn), 2) + std::pow(norm(px), 2) + std::pow(norm(py), 2));
-    if (change <= 5.0 * problem_.solver.eps * size) break;
+    if (change <= 5.0 * problem_.solver.tolerance * size) break;
   }
   if (outer > max_outer) {
     outer = max_outer;
@@ -562,16 +580,16 @@ void CaseSolver::run() {
         max_outer);
   }
   sol_.statistics.inorm = prescribed_ ? 0 : outer;
-  sol_.statistics.itang = d.t >= 1 ? outer : 0;
+  sol_.statistics.itang = tangential ? outer : 0;
 
-  if (d.t >= 1) {
-    if (d.t == 1) {
+  if (tangential) {
+    if (kind == model::TangentialKind::Shift) {
       sol_.totals.shift_x = creep.ksi;
       sol_.totals.shift_y = creep.eta;
     } else {
       sol_.totals.creep_x = creep.ksi;
       sol_.totals.creep_y = creep.eta;
-      sol_.totals.spin = problem_.kinematics.cphi;
+      sol_.totals.spin = creepage.spin_rad_per_mm;
     }
     compute_totals(&tang);
   } else {
@@ -652,32 +670,14 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
 
 }  // namespace
 
-void check_supported(const Problem& problem) {
-  const ControlDigits& d = problem.digits;
-  if (d.b != 0 && d.b != 2 && d.b != 3) not_supported(fmt::format("normal method B={}", d.b));
-  if (d.m != 0 && d.m != 2 && d.m != 3 && d.m != 5)
-    not_supported(fmt::format("material model M={}", d.m));
-  if ((d.m == 2 || d.m == 3 || d.m == 5) && d.t == 1)
-    not_supported(fmt::format("the simplified theory M={} with shifts T=1", d.m));
-  if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
-  if (d.c == 3 || d.c == 4 || d.c == 9)
-    not_supported(fmt::format("influence coefficients C={}", d.c));
-  if (d.h != 0) not_supported(fmt::format("temperature H={}", d.h));
-  if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
-  if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
-  if (d.t >= 1 && problem.friction.law != 0)
-    not_supported(fmt::format("friction law L={}", problem.friction.law));
-  if (d.g == 5) not_supported("solver GDsteady G=5");
-  if (problem.potential.ipotcn == -6) not_supported("SDEC potential contact IPOTCN=-6");
-}
-
-Solution solve(const Problem& problem, State& state) {
-  check_supported(problem);
-  State::Impl& st = state.impl();
-  const Materials& mat = problem.materials;
+Solution PatchSolver::solve(const model::PatchProblem& problem) {
+  Impl& st = *impl_;
+  const model::Bodies& b = problem.bodies;
 
   Solution sol;
-  sol.material = elastic::combine_materials(mat.poiss1, mat.poiss2, mat.gg1, mat.gg2);
+  sol.material =
+      elastic::combine_materials(b.body1.poisson_ratio, b.body2.poisson_ratio,
+                                 b.body1.shear_modulus_N_mm2, b.body2.shear_modulus_N_mm2);
   geometry::Discretisation disc = geometry::build_discretisation(problem, sol.material);
   sol.grid = disc.grid;
   sol.hertz = disc.hertz;
@@ -685,9 +685,10 @@ Solution solve(const Problem& problem, State& state) {
 
   CaseSolver(problem, st, sol).run();
 
-  // P=3 keeps the stored previous state; otherwise this case becomes the previous one.
-  if (problem.digits.s >= 1) sol.subsurface = post::compute_subsurface(problem, sol);
-  if (problem.digits.p != 3 || !st.previous) st.previous = sol;
+  if (!problem.subsurface.empty())
+    sol.subsurface = post::compute_subsurface(problem.subsurface, problem.bodies, sol);
+  // A problem that does not become the previous one leaves the stored state as it was.
+  if (problem.sequence.becomes_previous || !st.previous) st.previous = sol;
   return sol;
 }
 

@@ -4,16 +4,19 @@
 
 namespace rollcontact {
 
-State::State() : State(SolveOptions{}) {}
-State::State(SolveOptions options) : impl_(std::make_unique<Impl>()) {
+PatchSolver::PatchSolver(SolveOptions options) : impl_(std::make_unique<Impl>()) {
   impl_->options = options;
 }
-State::~State() = default;
-State::State(State&&) noexcept = default;
-State& State::operator=(State&&) noexcept = default;
+PatchSolver::~PatchSolver() = default;
+PatchSolver::PatchSolver(PatchSolver&&) noexcept = default;
+PatchSolver& PatchSolver::operator=(PatchSolver&&) noexcept = default;
 
-const SolveOptions& State::options() const noexcept {
+const SolveOptions& PatchSolver::options() const noexcept {
   return impl_->options;
+}
+
+void PatchSolver::reset_sequence() noexcept {
+  impl_->previous.reset();
 }
 
 namespace {
@@ -34,14 +37,15 @@ std::unique_ptr<NormalOperators> make_normal_operators(const Grid& grid,
 
 }  // namespace
 
-NormalOperators& State::Impl::normal_operators(const Grid& grid, const CombinedMaterial& material) {
+NormalOperators& PatchSolver::Impl::normal_operators(const Grid& grid,
+                                                     const CombinedMaterial& material) {
   if (!normal || !same_grid_and_material(normal->grid, grid, normal->material, material))
     normal = make_normal_operators(grid, material, options);
   return *normal;
 }
 
-NormalOperators& State::Impl::coarse_normal_operators(int level, const Grid& grid,
-                                                      const CombinedMaterial& material) {
+NormalOperators& PatchSolver::Impl::coarse_normal_operators(int level, const Grid& grid,
+                                                            const CombinedMaterial& material) {
   const std::size_t k = static_cast<std::size_t>(level - 1);
   if (coarse_normal.size() <= k) coarse_normal.resize(k + 1);
   auto& ops = coarse_normal[k];
@@ -63,9 +67,10 @@ elastic::Kernel difference(const elastic::Kernel& a, const elastic::Kernel& b) {
 
 }  // namespace
 
-TangentialOperators& State::Impl::tangential_operators(const Grid& grid,
-                                                       const CombinedMaterial& material, int t,
-                                                       double shift_x, double shift_y) {
+TangentialOperators& PatchSolver::Impl::tangential_operators(const Grid& grid,
+                                                             const CombinedMaterial& material,
+                                                             int t, double shift_x,
+                                                             double shift_y) {
   // T=1 uses C for the previous displacement (material-fixed grid): no shift.
   if (t == 1) shift_x = shift_y = 0.0;
   if (tangential &&
@@ -164,9 +169,9 @@ TangentialOperators& State::Impl::tangential_operators(const Grid& grid,
   return *tangential;
 }
 
-CoarseSteadyOperators& State::Impl::coarse_steady_operators(int level, const Grid& grid,
-                                                            const CombinedMaterial& material,
-                                                            double shift_x, double shift_y) {
+CoarseSteadyOperators& PatchSolver::Impl::coarse_steady_operators(int level, const Grid& grid,
+                                                                  const CombinedMaterial& material,
+                                                                  double shift_x, double shift_y) {
   const std::size_t k = static_cast<std::size_t>(level - 1);
   if (coarse_steady.size() <= k) coarse_steady.resize(k + 1);
   auto& ops = coarse_steady[k];

@@ -1,5 +1,5 @@
 #pragma once
-// What a State holds: cached operators per grid and material, and the previous solution.
+// What a PatchSolver holds: cached operators per grid and material, and the previous solution.
 
 #include <memory>
 #include <optional>
@@ -71,7 +71,7 @@ struct CoarseSteadyOperators {
   }
 };
 
-struct State::Impl {
+struct PatchSolver::Impl {
   SolveOptions options;
   std::unique_ptr<NormalOperators> normal;  ///< rebuilt when grid or material change
   /// Operators of the coarser grids of the nested-iteration start, per level (1 = twice as

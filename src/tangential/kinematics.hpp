@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "rollcontact/grid.hpp"
-#include "rollcontact/problem.hpp"
+#include "rollcontact/model/patch_problem.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::tangential {
@@ -13,13 +13,14 @@ namespace rollcontact::tangential {
 /// Which tangential solver a case uses (physics.md §9.1).
 enum class TangentialSolverKind { None, TangCG, ConvexGS, SteadyGS };
 
-/// The solver selected by the T, G and M digits before the trailing-edge check.
-TangentialSolverKind select_solver(const ControlDigits& digits);
+/// The solver selected by the tangential problem and the solver options before the
+/// trailing-edge check (CONTACT's T and G digits).
+TangentialSolverKind select_solver(const model::PatchProblem& problem);
 
 /// χ, δq, V and δt after the adjustments of physics.md §14 (T=0,1: χ=0, δq=1, V=1; T=3 with
 /// SteadyGS: χ → 0 or π, δq = δx). `warnings` receives a message when a value is changed by more
 /// than CONTACT's 1 % threshold.
-EffectiveKinematics effective_kinematics(const Problem& problem, const Grid& grid,
+EffectiveKinematics effective_kinematics(const model::PatchProblem& problem, const Grid& grid,
                                          std::vector<std::string>* warnings = nullptr);
 
 /// Rigid shift per step W = δq·w [mm] (T=2,3) or the rigid shift [mm] (T=1) of every element,
@@ -27,7 +28,7 @@ EffectiveKinematics effective_kinematics(const Problem& problem, const Grid& gri
 struct RigidShift {
   std::vector<double> wx, wy;
 };
-RigidShift rigid_shift(const Grid& grid, const Problem& problem, const EffectiveKinematics& kin,
-                       double cksi, double ceta, double cphi);
+RigidShift rigid_shift(const Grid& grid, const model::PatchProblem& problem,
+                       const EffectiveKinematics& kin, double cksi, double ceta, double cphi);
 
 }  // namespace rollcontact::tangential

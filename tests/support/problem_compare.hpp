@@ -11,14 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 
 namespace rollcontact::test {
 
 /// `p` with explicit digits (D=2, Z=2, C, L, G, E resolved; M2 0/2; H, S 0/3; R 1/3) and the
 /// members its choices do not use reset to their defaults.
-inline Problem canonical(Problem p) {
-  ControlDigits& d = p.digits;
+inline format::CaseRecord canonical(format::CaseRecord p) {
+  format::ControlDigits& d = p.digits;
   d.d = 2;
   d.z = 2;
   d.c = p.materials.influence_type;
@@ -29,10 +29,10 @@ inline Problem canonical(Problem p) {
   d.h = d.h >= 1 ? 3 : 0;
   d.s = d.s >= 1 ? 3 : 0;
   d.r = (d.r == 2 || d.r == 3) ? 3 : 1;
-  if (d.x == 0) d.debug = DebugDigits{};
+  if (d.x == 0) d.debug = format::DebugDigits{};
 
-  const Kinematics k0;
-  Kinematics& k = p.kinematics;
+  const format::Kinematics k0;
+  format::Kinematics& k = p.kinematics;
   if (d.n == 1) k.pen = k0.pen;
   if (d.n == 0) k.fn = k0.fn;
   if (d.f >= 1) k.cksi = k0.cksi;
@@ -47,12 +47,12 @@ inline Problem canonical(Problem p) {
   }
   if (k.extra_slip_mode != 9) k.extra_slip.clear();
 
-  Friction& f = p.friction;
+  format::Friction& f = p.friction;
   if (!(f.law == 2 || f.law == 3 || f.law == 4 || f.law == 6)) f.memdst = f.mem_s0 = 0.0;
   if (d.v != 3) f.rows.clear();
 
-  const SolverSettings s0;
-  SolverSettings& s = p.solver;
+  const format::SolverSettings s0;
+  format::SolverSettings& s = p.solver;
   if (s.method != 2 && s.method != 3) s.omega_h = s.omega_s = 0.0;
   if (s.method < 2 || s.method > 4) {
     s.inislp = s0.inislp;
@@ -60,21 +60,21 @@ inline Problem canonical(Problem p) {
   }
   if (s.method != 5) s.gd = s0.gd;
 
-  Materials& m = p.materials;
+  format::Materials& m = p.materials;
   if (d.b != 1) m.flxz = 0.0;
   if (d.m == 0 || d.m == 6 || d.m == 7) m.model_params = {};
   if (m.influence_type != 9) m.influence_file.clear();
-  if (m.influence_type != 4) m.conformal = Materials::Conformal{};
+  if (m.influence_type != 4) m.conformal = format::Materials::Conformal{};
 
-  if (p.potential.ipotcn < 0) p.geometry = UndeformedDistance{};
-  if (!p.damping.enabled) p.damping = Damping{};
-  if (d.h == 0) p.heat = HeatParameters{};
+  if (p.potential.ipotcn < 0) p.geometry = model::UndeformedDistance{};
+  if (!p.damping.enabled) p.damping = format::Damping{};
+  if (d.h == 0) p.heat = format::HeatParameters{};
   if (d.m != 4) p.heat.betapl = 0.0;
-  if (d.s == 0) p.subsurface = Subsurface{};
+  if (d.s == 0) p.subsurface = format::Subsurface{};
 
   // Where a case came from is not part of the problem; whether it can be computed is.
   const bool failed = !p.source.case_error.empty();
-  p.source = SourceInfo{};
+  p.source = format::SourceInfo{};
   if (failed) p.source.case_error = "error";
   return p;
 }
@@ -102,13 +102,13 @@ void expect_same_reals(const std::array<double, N>& a, const std::array<double, 
 }
 
 /// Compares every member of two Problems (call with canonical() forms).
-inline void expect_same_problem(const Problem& a, const Problem& b) {
+inline void expect_same_problem(const format::CaseRecord& a, const format::CaseRecord& b) {
   EXPECT_EQ(a.case_number, b.case_number);
   EXPECT_EQ(a.result_element, b.result_element);
   EXPECT_EQ(a.contact_problem, b.contact_problem);
 
-  const ControlDigits& x = a.digits;
-  const ControlDigits& y = b.digits;
+  const format::ControlDigits& x = a.digits;
+  const format::ControlDigits& y = b.digits;
 #define RC_DIGIT(m) EXPECT_EQ(x.m, y.m) << "digit " #m
   RC_DIGIT(p);
   RC_DIGIT(b);
@@ -143,8 +143,8 @@ inline void expect_same_problem(const Problem& a, const Problem& b) {
   RC_DIGIT(debug.readln);
 #undef RC_DIGIT
 
-  const SolverSettings& s = a.solver;
-  const SolverSettings& t = b.solver;
+  const format::SolverSettings& s = a.solver;
+  const format::SolverSettings& t = b.solver;
   EXPECT_EQ(s.maxgs, t.maxgs);
   EXPECT_EQ(s.maxin, t.maxin);
   EXPECT_EQ(s.maxnr, t.maxnr);
@@ -164,8 +164,8 @@ inline void expect_same_problem(const Problem& a, const Problem& b) {
   RC_EXPECT_REAL(s.gd.d_slp, t.gd.d_slp, "gd.d_slp");
   RC_EXPECT_REAL(s.gd.pow_s, t.gd.pow_s, "gd.pow_s");
 
-  const Kinematics& k = a.kinematics;
-  const Kinematics& q = b.kinematics;
+  const format::Kinematics& k = a.kinematics;
+  const format::Kinematics& q = b.kinematics;
   RC_EXPECT_REAL(k.pen, q.pen, "pen");
   RC_EXPECT_REAL(k.fn, q.fn, "fn");
   RC_EXPECT_REAL(k.cksi, q.cksi, "cksi");
@@ -182,8 +182,8 @@ inline void expect_same_problem(const Problem& a, const Problem& b) {
   EXPECT_EQ(k.extra_slip_mode, q.extra_slip_mode);
   expect_same_reals(k.extra_slip, q.extra_slip, "extra_slip");
 
-  const Friction& f = a.friction;
-  const Friction& g = b.friction;
+  const format::Friction& f = a.friction;
+  const format::Friction& g = b.friction;
   EXPECT_EQ(f.law, g.law);
   RC_EXPECT_REAL(f.fstat, g.fstat, "fstat");
   RC_EXPECT_REAL(f.fkin, g.fkin, "fkin");
@@ -197,8 +197,8 @@ inline void expect_same_problem(const Problem& a, const Problem& b) {
     expect_same_reals(f.rows[r].params, g.rows[r].params, "rows.params");
   }
 
-  const Materials& m = a.materials;
-  const Materials& n = b.materials;
+  const format::Materials& m = a.materials;
+  const format::Materials& n = b.materials;
   RC_EXPECT_REAL(m.poiss1, n.poiss1, "poiss1");
   RC_EXPECT_REAL(m.poiss2, n.poiss2, "poiss2");
   RC_EXPECT_REAL(m.gg1, n.gg1, "gg1");
@@ -217,8 +217,8 @@ inline void expect_same_problem(const Problem& a, const Problem& b) {
   EXPECT_EQ(a.potential.my, b.potential.my);
   expect_same_reals(a.potential.values, b.potential.values, "potential.values");
 
-  const UndeformedDistance& u = a.geometry;
-  const UndeformedDistance& w = b.geometry;
+  const model::UndeformedDistance& u = a.geometry;
+  const model::UndeformedDistance& w = b.geometry;
   EXPECT_EQ(u.ibase, w.ibase);
   EXPECT_EQ(u.iplan, w.iplan);
   expect_same_reals(u.coeffs, w.coeffs, "geometry.coeffs");
@@ -237,8 +237,8 @@ inline void expect_same_problem(const Problem& a, const Problem& b) {
   RC_EXPECT_REAL(a.damping.dfnmax, b.damping.dfnmax, "dfnmax");
   RC_EXPECT_REAL(a.damping.dftmax, b.damping.dftmax, "dftmax");
 
-  const HeatParameters& h = a.heat;
-  const HeatParameters& j = b.heat;
+  const format::HeatParameters& h = a.heat;
+  const format::HeatParameters& j = b.heat;
   expect_same_reals(std::array<double, 9>{h.bktemp1, h.heatcp1, h.lambda1, h.dens1, h.bktemp2,
                                           h.heatcp2, h.lambda2, h.dens2, h.betapl},
                     std::array<double, 9>{j.bktemp1, j.heatcp1, j.lambda1, j.dens1, j.bktemp2,
@@ -249,8 +249,8 @@ inline void expect_same_problem(const Problem& a, const Problem& b) {
   EXPECT_EQ(a.subsurface.output, b.subsurface.output);
   ASSERT_EQ(a.subsurface.blocks.size(), b.subsurface.blocks.size());
   for (std::size_t i = 0; i < a.subsurface.blocks.size(); ++i) {
-    const SubsurfaceBlock& c = a.subsurface.blocks[i];
-    const SubsurfaceBlock& e = b.subsurface.blocks[i];
+    const model::SubsurfaceBlock& c = a.subsurface.blocks[i];
+    const model::SubsurfaceBlock& e = b.subsurface.blocks[i];
     EXPECT_EQ(c.isubs, e.isubs);
     EXPECT_EQ(std::vector<int>({c.ixl, c.ixinc, c.ixh, c.iyl, c.iyinc, c.iyh}),
               std::vector<int>({e.ixl, e.ixinc, e.ixh, e.iyl, e.iyinc, e.iyh}));
@@ -267,13 +267,14 @@ inline void expect_same_problem(const Problem& a, const Problem& b) {
 }
 
 /// `problems` without their origin (writers print it as a comment), e.g. to compare texts.
-inline std::vector<Problem> without_source(std::vector<Problem> problems) {
-  for (Problem& p : problems) p.source = SourceInfo{};
+inline std::vector<format::CaseRecord> without_source(std::vector<format::CaseRecord> problems) {
+  for (format::CaseRecord& p : problems) p.source = format::SourceInfo{};
   return problems;
 }
 
 /// Compares two lists of Problems case by case after canonical().
-inline void expect_same_problems(const std::vector<Problem>& a, const std::vector<Problem>& b) {
+inline void expect_same_problems(const std::vector<format::CaseRecord>& a,
+                                 const std::vector<format::CaseRecord>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
     SCOPED_TRACE("case index " + std::to_string(i));

@@ -25,27 +25,24 @@ TEST_P(KalkerCoefficients, FromSmallCreepageOnARefinedGrid) {
   const CreepCase cc = GetParam();
   const double g = 82000.0, nu = 0.25, fn = 10000.0, c = 5.0;
   const int n = 60;  // elements over each axis of the contact ellipse
-  Problem base;
-  base.digits.p = 2;
-  base.digits.t = 3;
-  base.digits.n = 1;
-  base.digits.o = 1;
-  base.solver.eps = 1e-6;
-  base.kinematics.fn = fn;
-  base.kinematics.veloc = 1000.0;
-  base.materials.poiss1 = base.materials.poiss2 = nu;
-  base.materials.gg1 = base.materials.gg2 = g;
+  model::PatchProblem base;
+  base.tangential.kind = model::TangentialKind::SteadyRolling;
+  base.normal.kind = model::NormalLoadKind::Force;
+  base.solver.tolerance = 1e-6;
+  base.normal.force_N = fn;
+  base.rolling.velocity_mm_per_s = 1000.0;
+  base.bodies.body1 = base.bodies.body2 = {nu, g};
   base.potential.ipotcn = -3;
   base.potential.mx = base.potential.my = n + 4;
   base.potential.values = {c * std::sqrt(cc.aob), c / std::sqrt(cc.aob), (n + 4.0) / n, 0.0};
-  base.friction.fstat = base.friction.fkin = 1e4;  // full adhesion: the linear limit
+  base.friction = {1e4, 1e4};  // full adhesion: the linear limit
   const double creep = 1e-6;
-  State state;
-  Problem px = base, py = base, pphi = base;
-  px.kinematics.cksi = creep;
-  py.kinematics.ceta = creep;
-  pphi.kinematics.cphi = creep / c;
-  const Solution sx = solve(px, state), sy = solve(py, state), sphi = solve(pphi, state);
+  PatchSolver solver;
+  model::PatchProblem px = base, py = base, pphi = base;
+  px.tangential.creepage.longitudinal = creep;
+  py.tangential.creepage.lateral = creep;
+  pphi.tangential.creepage.spin_rad_per_mm = creep / c;
+  const Solution sx = solver.solve(px), sy = solver.solve(py), sphi = solver.solve(pphi);
   ASSERT_TRUE(sx.solver.converged && sy.solver.converged && sphi.solver.converged);
   const double c11 = -sx.totals.fx / (g * c * c * creep);
   const double c22 = -sy.totals.fy / (g * c * c * creep);

@@ -3,7 +3,7 @@
 // size limits, sequences that keep the element size and an integer offset). The solver builds
 // the same grid with geometry::rectangular_grid, which rejects what the readers report first.
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 
 namespace rollcontact::format {
 

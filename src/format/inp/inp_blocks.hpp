@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "format/inp/case_record.hpp"
 #include "format/text/inp_stream.hpp"
-#include "rollcontact/problem.hpp"
 
 namespace rollcontact::format {
 

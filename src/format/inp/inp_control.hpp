@@ -4,8 +4,8 @@
 
 #include <array>
 
+#include "format/inp/case_record.hpp"
 #include "format/text/inp_stream.hpp"
-#include "rollcontact/problem.hpp"
 
 namespace rollcontact::format {
 

@@ -219,11 +219,11 @@ bool is_slices_extension(const std::filesystem::path& p, bool wheel) {
 
 }  // namespace
 
-WheelRailProblem Module1Reader::read_case(InpStream& in, int reid, int module_line,
-                                          int case_number) {
+WheelRailRecord Module1Reader::read_case(InpStream& in, int reid, int module_line,
+                                         int case_number) {
   Stored& st = stored_[reid];
   const bool first = !st.has_case;
-  WheelRailProblem p = first ? WheelRailProblem{} : st.last;
+  WheelRailRecord p = first ? WheelRailRecord{} : st.last;
   p.case_number = case_number;
   p.result_element = reid;
   p.source = SourceInfo{};

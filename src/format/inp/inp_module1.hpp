@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "format/inp/inp_reader.hpp"
+#include "format/inp/wheelrail_record.hpp"
 #include "format/text/inp_stream.hpp"
-#include "rollcontact/wheelrail_problem.hpp"
 
 namespace rollcontact::format {
 
@@ -26,13 +26,13 @@ class Module1Reader {
   /// module line (0 after an R=0/2 case); `case_number` is assigned by the caller (numbering is
   /// per result element and shared with module 3). Throws InputError for malformed input,
   /// including missing or malformed profile files.
-  WheelRailProblem read_case(InpStream& in, int reid, int module_line, int case_number);
+  WheelRailRecord read_case(InpStream& in, int reid, int module_line, int case_number);
 
  private:
   /// What a result element remembers between module-1 cases beyond the previous case itself.
   struct Stored {
     bool has_case = false;
-    WheelRailProblem last;
+    WheelRailRecord last;
     bool has_materials = false;       ///< a material block was read (C=2,3,4)
     bool has_discretisation = false;  ///< a discretisation line was read (D=2..9)
     bool has_rail = false;            ///< track dimensions and a rail profile were read

@@ -176,11 +176,11 @@ std::string_view friction_law_name(int law) {
 
 }  // namespace
 
-Problem Module3Reader::read_case(InpStream& in, int reid, int cpid, int module_line,
-                                 int case_number) {
+CaseRecord Module3Reader::read_case(InpStream& in, int reid, int cpid, int module_line,
+                                    int case_number) {
   Stored& st = stored_[{reid, cpid}];
   const bool first = !st.has_case;
-  Problem p = first ? Problem{} : st.last;
+  CaseRecord p = first ? CaseRecord{} : st.last;
   p.case_number = case_number;
   p.result_element = reid;
   p.contact_problem = cpid;

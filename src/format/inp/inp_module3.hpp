@@ -6,9 +6,9 @@
 #include <map>
 #include <utility>
 
+#include "format/inp/case_record.hpp"
 #include "format/inp/inp_reader.hpp"
 #include "format/text/inp_stream.hpp"
-#include "rollcontact/problem.hpp"
 
 namespace rollcontact::format {
 
@@ -22,13 +22,13 @@ class Module3Reader {
   /// Reads the case starting at the control words. `module_line` is the line of the preceding
   /// module line (0 if the case follows an R=0/2 case); `case_number` is assigned by the caller
   /// (numbering is per result element and shared with module 1).
-  Problem read_case(InpStream& in, int reid, int cpid, int module_line, int case_number);
+  CaseRecord read_case(InpStream& in, int reid, int cpid, int module_line, int case_number);
 
  private:
-  /// What a contact problem remembers between cases beyond the previous Problem itself.
+  /// What a contact problem remembers between cases beyond the previous CaseRecord itself.
   struct Stored {
     bool has_case = false;
-    Problem last;                   ///< the previous case, fully resolved
+    CaseRecord last;                ///< the previous case, fully resolved
     bool has_geometry = false;      ///< an IBASE block was read for a non-Hertzian grid
     bool has_subsurface = false;    ///< an S=3 block list was read
     bool has_heat = false;          ///< H=3 parameters were read

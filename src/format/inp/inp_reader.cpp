@@ -70,11 +70,11 @@ std::vector<InputCase> read_input_string(const std::string& text, const std::str
       const int case_number = ++case_counts[m.reid];
       int r = 0;
       if (m.module == 1) {
-        WheelRailProblem p = module1.read_case(in, m.reid, module_line, case_number);
+        WheelRailRecord p = module1.read_case(in, m.reid, module_line, case_number);
         r = p.digits.r;
         cases.emplace_back(std::move(p));
       } else {
-        Problem p = module3.read_case(in, m.reid, m.cpid, module_line, case_number);
+        CaseRecord p = module3.read_case(in, m.reid, m.cpid, module_line, case_number);
         r = p.digits.r;
         cases.emplace_back(std::move(p));
       }
@@ -100,31 +100,31 @@ std::vector<InputCase> read_input_cases(const std::filesystem::path& path,
   return read_input_string(text.str(), path.string(), path.parent_path(), options);
 }
 
-std::vector<Problem> read_inp_string(const std::string& text, const std::string& name,
-                                     const std::filesystem::path& base_dir,
-                                     const InpReadOptions& options) {
+std::vector<CaseRecord> read_inp_string(const std::string& text, const std::string& name,
+                                        const std::filesystem::path& base_dir,
+                                        const InpReadOptions& options) {
   std::vector<InputCase> cases = read_input_string(text, name, base_dir, options);
-  std::vector<Problem> problems;
+  std::vector<CaseRecord> problems;
   problems.reserve(cases.size());
   for (InputCase& c : cases) {
-    if (const auto* wr = std::get_if<WheelRailProblem>(&c)) {
+    if (const auto* wr = std::get_if<WheelRailRecord>(&c)) {
       const int line = wr->source.module_line > 0 ? wr->source.module_line : wr->source.first_line;
       throw InputError(name, line,
                        "module 1 (wheel/rail) input is not supported yet by this reader (use "
                        "read_input_cases)");
     }
-    problems.push_back(std::move(std::get<Problem>(c)));
+    problems.push_back(std::move(std::get<CaseRecord>(c)));
   }
   return problems;
 }
 
-std::vector<Problem> read_inp_string(const std::string& text, const std::string& name,
-                                     const std::filesystem::path& base_dir) {
+std::vector<CaseRecord> read_inp_string(const std::string& text, const std::string& name,
+                                        const std::filesystem::path& base_dir) {
   return read_inp_string(text, name, base_dir, InpReadOptions{});
 }
 
-std::vector<Problem> read_inp_file(const std::filesystem::path& path,
-                                   const InpReadOptions& options) {
+std::vector<CaseRecord> read_inp_file(const std::filesystem::path& path,
+                                      const InpReadOptions& options) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path.string(), 0, "cannot open input file");
   std::ostringstream text;
@@ -132,7 +132,7 @@ std::vector<Problem> read_inp_file(const std::filesystem::path& path,
   return read_inp_string(text.str(), path.string(), path.parent_path(), options);
 }
 
-std::vector<Problem> read_inp_file(const std::filesystem::path& path) {
+std::vector<CaseRecord> read_inp_file(const std::filesystem::path& path) {
   return read_inp_file(path, InpReadOptions{});
 }
 

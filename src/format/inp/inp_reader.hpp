@@ -7,25 +7,25 @@
 #include <variant>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
-#include "rollcontact/wheelrail_problem.hpp"
+#include "format/inp/case_record.hpp"
+#include "format/inp/wheelrail_record.hpp"
 
 namespace rollcontact::format {
 
 /// Choices of the .inp reader.
 struct InpReadOptions {
   /// A missing auxiliary file (C=9 coefficient file) is an InputError. When false (default), the
-  /// case gets Problem::source.case_error and reading continues, so the other cases of the file
+  /// case gets CaseRecord::source.case_error and reading continues, so the other cases of the file
   /// can still be computed (spec/validation.md §4, conformal.inp).
   bool missing_files_are_errors = false;
 };
 
-/// One case of an .inp file: a module-3 Problem or a module-1 WheelRailProblem.
-using InputCase = std::variant<Problem, WheelRailProblem>;
+/// One case of an .inp file: a module-3 CaseRecord or a module-1 WheelRailRecord.
+using InputCase = std::variant<CaseRecord, WheelRailRecord>;
 
 /// Module number of a case: 3 (basic contact) or 1 (wheel/rail).
 inline int input_case_module(const InputCase& c) {
-  return std::holds_alternative<WheelRailProblem>(c) ? 1 : 3;
+  return std::holds_alternative<WheelRailRecord>(c) ? 1 : 3;
 }
 
 /// Reads every case of an .inp file, modules 1 and 3, in file order, fully resolved ("keep"
@@ -47,17 +47,17 @@ std::vector<InputCase> read_input_string(const std::string& text, const std::str
 /// naming file, line and offending text for malformed input, and an InputError "module 1
 /// (wheel/rail) input is not supported yet by this reader" at the first module-1 module line of an
 /// otherwise readable file (use read_input_cases for those).
-std::vector<Problem> read_inp_file(const std::filesystem::path& path);
+std::vector<CaseRecord> read_inp_file(const std::filesystem::path& path);
 
 /// Same from a string; `name` is used in messages and to resolve relative file names.
-std::vector<Problem> read_inp_string(const std::string& text, const std::string& name,
-                                     const std::filesystem::path& base_dir = {});
+std::vector<CaseRecord> read_inp_string(const std::string& text, const std::string& name,
+                                        const std::filesystem::path& base_dir = {});
 
 /// As above, with explicit options.
-std::vector<Problem> read_inp_file(const std::filesystem::path& path,
-                                   const InpReadOptions& options);
-std::vector<Problem> read_inp_string(const std::string& text, const std::string& name,
-                                     const std::filesystem::path& base_dir,
-                                     const InpReadOptions& options);
+std::vector<CaseRecord> read_inp_file(const std::filesystem::path& path,
+                                      const InpReadOptions& options);
+std::vector<CaseRecord> read_inp_string(const std::string& text, const std::string& name,
+                                        const std::filesystem::path& base_dir,
+                                        const InpReadOptions& options);
 
 }  // namespace rollcontact::format

@@ -25,7 +25,7 @@ std::string real(double v) {
 /// Writes one case in the line order of spec/inp-format.md §4.
 class CaseWriter {
  public:
-  CaseWriter(std::string& out, const Problem& p, const std::filesystem::path& base_dir)
+  CaseWriter(std::string& out, const CaseRecord& p, const std::filesystem::path& base_dir)
       : out_(out), p_(p), base_dir_(base_dir) {}
 
   void write() {
@@ -324,16 +324,16 @@ class CaseWriter {
   }
 
   std::string& out_;
-  const Problem& p_;
+  const CaseRecord& p_;
   const std::filesystem::path& base_dir_;
 };
 
 }  // namespace
 
-std::string write_inp_string(const std::vector<Problem>& problems,
+std::string write_inp_string(const std::vector<CaseRecord>& problems,
                              const std::filesystem::path& base_dir) {
   std::string out = "% written by rollcontact (every case explicit: no \"keep\" digits)\n";
-  for (const Problem& p : problems) {
+  for (const CaseRecord& p : problems) {
     out += "\n";
     if (!p.source.file.empty())
       out += fmt::format("% from {} line {} (case {})\n", p.source.file, p.source.first_line,
@@ -349,7 +349,7 @@ std::string write_inp_string(const std::vector<Problem>& problems,
   return out;
 }
 
-void write_inp_file(const std::filesystem::path& path, const std::vector<Problem>& problems) {
+void write_inp_file(const std::filesystem::path& path, const std::vector<CaseRecord>& problems) {
   write_file_atomically(path, write_inp_string(problems, path.parent_path()));
 }
 

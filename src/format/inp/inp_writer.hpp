@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 
 namespace rollcontact::format {
 
@@ -17,10 +17,10 @@ namespace rollcontact::format {
 /// with round-trip precision. `base_dir` is the folder the file will live in (influence-file
 /// names are written relative to it). Throws rollcontact::Error for values the .inp language
 /// cannot express (e.g. a file name containing a quote).
-std::string write_inp_string(const std::vector<Problem>& problems,
+std::string write_inp_string(const std::vector<CaseRecord>& problems,
                              const std::filesystem::path& base_dir = {});
 
 /// Writes write_inp_string(problems, path's folder) to `path` atomically.
-void write_inp_file(const std::filesystem::path& path, const std::vector<Problem>& problems);
+void write_inp_file(const std::filesystem::path& path, const std::vector<CaseRecord>& problems);
 
 }  // namespace rollcontact::format

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "elastic/material.hpp"
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 
 namespace rollcontact::format {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/profile.hpp"
+#include "rollcontact/model/profile.hpp"
 
 namespace rollcontact::format {
 

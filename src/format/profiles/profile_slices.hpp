@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "format/profiles/profile_points.hpp"
-#include "rollcontact/profile.hpp"
+#include "rollcontact/model/profile.hpp"
 
 namespace rollcontact::format {
 

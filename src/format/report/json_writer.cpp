@@ -6,7 +6,7 @@
 namespace rollcontact::format {
 namespace {
 
-nlohmann::json case_identity(const Problem& problem) {
+nlohmann::json case_identity(const CaseRecord& problem) {
   nlohmann::json j;
   j["case"] = problem.case_number;
   j["module"] = 3;
@@ -17,7 +17,7 @@ nlohmann::json case_identity(const Problem& problem) {
 
 }  // namespace
 
-nlohmann::json case_to_json(const Problem& problem, const Solution& solution) {
+nlohmann::json case_to_json(const CaseRecord& problem, const Solution& solution) {
   nlohmann::json j = case_identity(problem);
   const bool converged = solution.solver.converged;
   j["status"] = converged ? "converged" : "not_converged";
@@ -54,7 +54,7 @@ nlohmann::json case_to_json(const Problem& problem, const Solution& solution) {
   return j;
 }
 
-nlohmann::json case_error_to_json(const Problem& problem, const std::string& message) {
+nlohmann::json case_error_to_json(const CaseRecord& problem, const std::string& message) {
   nlohmann::json j = case_identity(problem);
   j["status"] = "error";
   j["message"] = message;

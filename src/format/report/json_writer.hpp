@@ -5,15 +5,15 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::format {
 
 /// JSON of one solved module-3 case.
-nlohmann::json case_to_json(const Problem& problem, const Solution& solution);
+nlohmann::json case_to_json(const CaseRecord& problem, const Solution& solution);
 /// JSON of a case that failed ("error") with its message.
-nlohmann::json case_error_to_json(const Problem& problem, const std::string& message);
+nlohmann::json case_error_to_json(const CaseRecord& problem, const std::string& message);
 /// Top-level document.
 nlohmann::json results_document(const std::string& input_name, nlohmann::json cases);
 

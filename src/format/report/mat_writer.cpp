@@ -78,7 +78,7 @@ std::vector<std::string> value_columns(bool rolling, bool plastic, bool heat) {
   return c;
 }
 
-void material_lines(std::string& out, const Problem& problem, int ncol) {
+void material_lines(std::string& out, const CaseRecord& problem, int ncol) {
   const ControlDigits& d = problem.digits;
   const Materials& m = problem.materials;
   const auto& mp = m.model_params;
@@ -121,7 +121,7 @@ void material_lines(std::string& out, const Problem& problem, int ncol) {
   out += head + "\n" + values + "\n";
 }
 
-void friction_lines(std::string& out, const Problem& problem, double veloc, int ncol) {
+void friction_lines(std::string& out, const CaseRecord& problem, double veloc, int ncol) {
   const Friction& f = problem.friction;
   const int law = f.law;
   const std::string lead = names({{"%    L", 4}, {"H", 6}, {"VELOC", 9}});
@@ -172,7 +172,7 @@ double at(const std::vector<double>& v, std::size_t i) {
 
 }  // namespace
 
-std::string mat_file_text(const Problem& problem, const Solution& solution) {
+std::string mat_file_text(const CaseRecord& problem, const Solution& solution) {
   const ControlDigits& d = problem.digits;
   const Grid& grid = solution.grid;
   const EffectiveKinematics ek = effective_kinematics(problem, solution);
@@ -275,7 +275,7 @@ std::filesystem::path mat_file_path(const std::filesystem::path& output_stem, in
 }
 
 std::filesystem::path write_mat_file(const std::filesystem::path& output_stem,
-                                     const Problem& problem, const Solution& solution) {
+                                     const CaseRecord& problem, const Solution& solution) {
   const std::filesystem::path path = mat_file_path(output_stem, problem.case_number);
   write_file_atomically(path, mat_file_text(problem, solution));
   return path;

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::format {
@@ -17,7 +17,7 @@ inline constexpr int kMatFormatVersion = 2410;
 
 /// The text of the .mat file: with digits.a == 1 the elements in contact (adhesion, slip,
 /// plastic), with digits.a >= 2 every element of the potential contact area.
-std::string mat_file_text(const Problem& problem, const Solution& solution);
+std::string mat_file_text(const CaseRecord& problem, const Solution& solution);
 
 /// `<stem>.<nnnn>.mat` (case number zero-padded to at least 4 digits).
 std::filesystem::path mat_file_path(const std::filesystem::path& output_stem, int case_number);
@@ -25,6 +25,6 @@ std::filesystem::path mat_file_path(const std::filesystem::path& output_stem, in
 /// Writes mat_file_text() atomically to mat_file_path() and returns the path.
 /// Throws rollcontact::Error when the file cannot be written.
 std::filesystem::path write_mat_file(const std::filesystem::path& output_stem,
-                                     const Problem& problem, const Solution& solution);
+                                     const CaseRecord& problem, const Solution& solution);
 
 }  // namespace rollcontact::format

@@ -51,7 +51,7 @@ void write_header(std::ostream& os, int t, int h) {
 
 }  // namespace
 
-void write_element_table(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_element_table(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;
   const Grid& g = solution.grid;
   if (solution.state.size() != g.size()) return;

@@ -17,7 +17,7 @@ std::string sig(double v) {
 }
 }  // namespace
 
-void write_force_block(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_force_block(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;
   const auto& t = solution.totals;
   const double eps = problem.solver.eps;
@@ -72,7 +72,7 @@ void write_force_block(std::ostream& os, const Problem& problem, const Solution&
   line(os, values);
 }
 
-void write_sensitivities(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_sensitivities(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   // Only the force iteration (F=1,2) computes derivatives; CONTACT prints 0 for "not calculated".
   const std::string zero = fmt_sig(12, 3, 3, 0.0);
   const Sensitivities& d = solution.sensitivities;
@@ -93,7 +93,7 @@ void write_sensitivities(std::ostream& os, const Problem& problem, const Solutio
   }
 }
 
-void write_statistics(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_statistics(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& s = solution.statistics;
   const bool plast = uses_plasticity(problem);
   line(os, "");

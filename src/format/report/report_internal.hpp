@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::format::report {
@@ -17,14 +17,14 @@ void line(std::ostream& os, std::string_view text);
 std::string a12(std::string_view label);
 
 /// Module-3 parameter blocks printed for O >= 2 (digit echo up to kinematic constants).
-void write_parameter_blocks(std::ostream& os, const Problem& problem, const Solution& solution);
+void write_parameter_blocks(std::ostream& os, const CaseRecord& problem, const Solution& solution);
 
 /// Force block (O >= 1), sensitivities and statistics (O >= 2), §3.3–3.4.
-void write_force_block(std::ostream& os, const Problem& problem, const Solution& solution);
-void write_sensitivities(std::ostream& os, const Problem& problem, const Solution& solution);
-void write_statistics(std::ostream& os, const Problem& problem, const Solution& solution);
+void write_force_block(std::ostream& os, const CaseRecord& problem, const Solution& solution);
+void write_sensitivities(std::ostream& os, const CaseRecord& problem, const Solution& solution);
+void write_statistics(std::ostream& os, const CaseRecord& problem, const Solution& solution);
 
 /// The O = 5 table of quantities per contact element, §3.6.
-void write_element_table(std::ostream& os, const Problem& problem, const Solution& solution);
+void write_element_table(std::ostream& os, const CaseRecord& problem, const Solution& solution);
 
 }  // namespace rollcontact::format::report

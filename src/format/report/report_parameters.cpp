@@ -46,7 +46,7 @@ void write_digit_echo(std::ostream& os, const ControlDigits& d) {
                i2(d.h), i2(d.g), i2(d.i), i2(d.a), i2(d.o), i2(d.w), i2(d.r)));
 }
 
-void write_problem_description(std::ostream& os, const Problem& problem) {
+void write_problem_description(std::ostream& os, const CaseRecord& problem) {
   const auto& d = problem.digits;
   const char* given = d.n == 0 ? "APPROACH" : "NORMAL FORCE";
   const char* method = d.b == 0   ? "FULL"
@@ -81,7 +81,7 @@ void write_problem_description(std::ostream& os, const Problem& problem) {
 }
 
 // Hertz data of Hertzian potential contacts; labels pad to column 43 so values start at 44.
-void write_hertz_block(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_hertz_block(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const int ipotcn = problem.potential.ipotcn;
   const auto& hz = solution.hertz;
   const auto& grid = solution.grid;
@@ -132,7 +132,7 @@ CombinedMaterial rubbery_material(const Materials& m) {
   return c;
 }
 
-void write_material_block(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_material_block(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;
   const auto& m = problem.materials;
   const auto& mp = m.model_params;
@@ -144,7 +144,7 @@ void write_material_block(std::ostream& os, const Problem& problem, const Soluti
   line(os, "");
   line(os, "    POISS(1)    POISS(2)     GG(1)       GG(2)");
   line(os, "  " + g12(m.poiss1) + g12(m.poiss2) + g12(m.gg1) + g12(m.gg2));
-  // Not printed for lack of data in Problem: damping (M2=2) and heat constants (H>=1).
+  // Not printed for lack of data in CaseRecord: damping (M2=2) and heat constants (H>=1).
   if (d.m == 1) {
     const CombinedMaterial rv = rubbery_material(m);
     const double veloc = effective_kinematics(problem, solution).veloc;
@@ -242,7 +242,7 @@ void write_friction_block(std::ostream& os, const Friction& fr, int output_digit
   }
 }
 
-void write_kinematics_block(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_kinematics_block(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;
   const auto& kin = problem.kinematics;
   const EffectiveKinematics ek = effective_kinematics(problem, solution);
@@ -274,7 +274,7 @@ void write_kinematics_block(std::ostream& os, const Problem& problem, const Solu
 
 }  // namespace
 
-void write_parameter_blocks(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_parameter_blocks(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;
   write_digit_echo(os, d);
   write_problem_description(os, problem);

@@ -45,7 +45,7 @@ void write_points(std::ostream& os, const SubsurfaceResult& r) {
 
 }  // namespace
 
-void write_subsurface_summaries(std::ostream& os, const Problem& problem,
+void write_subsurface_summaries(std::ostream& os, const CaseRecord& problem,
                                 const Solution& solution) {
   if (problem.digits.s < 1 || problem.subsurface.output < 1) return;
   for (std::size_t b = 0; b < solution.subsurface.size(); ++b) {

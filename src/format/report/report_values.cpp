@@ -5,7 +5,7 @@
 
 namespace rollcontact::format {
 
-EffectiveKinematics effective_kinematics(const Problem& problem, const Solution& solution) {
+EffectiveKinematics effective_kinematics(const CaseRecord& problem, const Solution& solution) {
   const auto& dg = problem.digits;
   const auto& kin = problem.kinematics;
   EffectiveKinematics e;
@@ -43,7 +43,7 @@ double static_friction(const Friction& friction) {
   }
 }
 
-EffectiveCreepages effective_creepages(const Problem& problem, const Solution& solution) {
+EffectiveCreepages effective_creepages(const CaseRecord& problem, const Solution& solution) {
   const auto& dg = problem.digits;
   const auto& kin = problem.kinematics;
   EffectiveCreepages c{kin.cksi, kin.ceta, kin.cphi};
@@ -54,7 +54,7 @@ EffectiveCreepages effective_creepages(const Problem& problem, const Solution& s
   return c;
 }
 
-EffectiveCreepages printed_creepages(const Problem& problem, const Solution& solution) {
+EffectiveCreepages printed_creepages(const CaseRecord& problem, const Solution& solution) {
   EffectiveCreepages c = effective_creepages(problem, solution);
   const double eps = problem.solver.eps;
   const EffectiveCreepages raw = c;
@@ -63,11 +63,11 @@ EffectiveCreepages printed_creepages(const Problem& problem, const Solution& sol
   return c;
 }
 
-double effective_approach(const Problem& problem, const Solution& solution) {
+double effective_approach(const CaseRecord& problem, const Solution& solution) {
   return problem.digits.n == 0 ? problem.kinematics.pen : solution.totals.pen;
 }
 
-bool uses_plasticity(const Problem& problem) {
+bool uses_plasticity(const CaseRecord& problem) {
   const double tau_c0 = problem.materials.model_params[2];
   return problem.digits.m == 4 && tau_c0 > 1e-10 && tau_c0 <= 1e10;
 }

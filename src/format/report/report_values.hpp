@@ -1,9 +1,9 @@
 #pragma once
-// Values that reports and JSON derive from a Problem and its Solution in the same way as CONTACT:
-// effective kinematics after the silent adjustments (spec/physics.md §14), the friction
+// Values that reports and JSON derive from a CaseRecord and its Solution in the same way as
+// CONTACT: effective kinematics after the silent adjustments (spec/physics.md §14), the friction
 // coefficient used to scale forces, and the creepages/shifts with solved unknowns filled in.
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::format {
@@ -18,7 +18,7 @@ struct EffectiveKinematics {
 
 /// Applies physics.md §14: T<=1 gives chi=0, dq=1, V=1; steady rolling with a grid-bound solver
 /// or a simplified theory uses dq = dx and chi in {0, pi}.
-EffectiveKinematics effective_kinematics(const Problem& problem, const Solution& solution);
+EffectiveKinematics effective_kinematics(const CaseRecord& problem, const Solution& solution);
 
 /// Static friction coefficient mu_s that scales relative forces (FX/FSTAT/FN): FSTAT for
 /// Coulomb, the zero-slip value FKIN + P1 + P3 for the falling laws L=2..4, FREF for L=6.
@@ -29,16 +29,16 @@ double static_friction(const Friction& friction);
 struct EffectiveCreepages {
   double x = 0.0, y = 0.0, phi = 0.0;
 };
-EffectiveCreepages effective_creepages(const Problem& problem, const Solution& solution);
+EffectiveCreepages effective_creepages(const CaseRecord& problem, const Solution& solution);
 
 /// As effective_creepages, with solved components that are negligible against the other one
 /// (|x| < |y| EPS and vice versa) set to 0 as CONTACT prints them.
-EffectiveCreepages printed_creepages(const Problem& problem, const Solution& solution);
+EffectiveCreepages printed_creepages(const CaseRecord& problem, const Solution& solution);
 
 /// Approach [mm]: prescribed (N=0) or solved (N=1).
-double effective_approach(const Problem& problem, const Solution& solution);
+double effective_approach(const CaseRecord& problem, const Solution& solution);
 
 /// True when the M=4 interfacial layer has an active plasticity limit (0 < TAU_C0 <= 1e10).
-bool uses_plasticity(const Problem& problem);
+bool uses_plasticity(const CaseRecord& problem);
 
 }  // namespace rollcontact::format

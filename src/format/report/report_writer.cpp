@@ -65,7 +65,7 @@ void write_report_banner(std::ostream& os) {
   report::line(os, rule);
 }
 
-void write_case_header(std::ostream& os, const Problem& problem) {
+void write_case_header(std::ostream& os, const CaseRecord& problem) {
   std::string s = fmt::format(" Case{:6d}", problem.case_number);
   if (problem.result_element >= 1)
     s += fmt::format(", result element{:4d}", problem.result_element);
@@ -73,7 +73,7 @@ void write_case_header(std::ostream& os, const Problem& problem) {
   report::line(os, s);
 }
 
-void write_case_report(std::ostream& os, const Problem& problem, const Solution& solution) {
+void write_case_report(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;
   write_case_header(os, problem);
   // Warnings and convergence problems go where CONTACT writes its trace lines.
@@ -100,7 +100,7 @@ void write_case_report(std::ostream& os, const Problem& problem, const Solution&
   report::write_subsurface_summaries(os, problem, solution);
 }
 
-void write_case_error(std::ostream& os, const Problem& problem, const std::string& message) {
+void write_case_error(std::ostream& os, const CaseRecord& problem, const std::string& message) {
   write_case_header(os, problem);
   write_message(os, " ERROR: ", message);
 }

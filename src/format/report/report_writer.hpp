@@ -4,7 +4,7 @@
 #include <iosfwd>
 #include <string>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::format {
@@ -12,9 +12,9 @@ namespace rollcontact::format {
 /// Banner at the top of a report.
 void write_report_banner(std::ostream& os);
 /// All blocks of one solved case at the level of problem.digits.o.
-void write_case_report(std::ostream& os, const Problem& problem, const Solution& solution);
+void write_case_report(std::ostream& os, const CaseRecord& problem, const Solution& solution);
 /// A case that could not be solved (error / not supported): header and message.
-void write_case_error(std::ostream& os, const Problem& problem, const std::string& message);
+void write_case_error(std::ostream& os, const CaseRecord& problem, const std::string& message);
 /// Closing lines.
 void write_report_end(std::ostream& os);
 
@@ -25,6 +25,6 @@ void write_element_division(std::ostream& os, const Solution& solution, int tang
                             double chi);
 
 /// The ` Case     n` line (preceded by a blank line), with the result element when REID >= 1.
-void write_case_header(std::ostream& os, const Problem& problem);
+void write_case_header(std::ostream& os, const CaseRecord& problem);
 
 }  // namespace rollcontact::format

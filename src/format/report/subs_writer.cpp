@@ -43,7 +43,7 @@ void append_block(std::string& out, const SubsurfaceResult& r, bool tensor) {
 
 }  // namespace
 
-std::string format_subs(const Problem& problem, const Solution& solution) {
+std::string format_subs(const CaseRecord& problem, const Solution& solution) {
   std::string out;
   for (const SubsurfaceResult& r : solution.subsurface) {
     append_block(out, r, problem.subsurface.matfil >= 2);
@@ -52,7 +52,7 @@ std::string format_subs(const Problem& problem, const Solution& solution) {
 }
 
 std::filesystem::path write_subs_file(const std::filesystem::path& output_stem,
-                                      const Problem& problem, const Solution& solution) {
+                                      const CaseRecord& problem, const Solution& solution) {
   if (problem.digits.s < 1 || problem.subsurface.matfil < 1 || solution.subsurface.empty()) {
     return {};
   }

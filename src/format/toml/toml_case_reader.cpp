@@ -281,7 +281,7 @@ std::size_t element_count(const PotentialContact& pc) {
 /// What the reader remembers across cases: the previous case per contact problem (for the
 /// first-case overrides and the grid-continuity rule) and case numbers per result element.
 struct Sequence {
-  std::map<std::pair<int, int>, Problem> last;
+  std::map<std::pair<int, int>, CaseRecord> last;
   std::map<int, int> case_counts;
 };
 
@@ -291,7 +291,7 @@ struct Context {
   TomlReadOptions options;
 };
 
-void read_solver(Table& c, Problem& p) {
+void read_solver(Table& c, CaseRecord& p) {
   SolverSettings& s = p.solver;
   auto t = c.opt_table("solver");
   if (!t) return;
@@ -337,7 +337,7 @@ void read_solver(Table& c, Problem& p) {
   t->finish();
 }
 
-void read_normal(Table& c, Problem& p) {
+void read_normal(Table& c, CaseRecord& p) {
   Table t = c.table("normal");
   ControlDigits& d = p.digits;
   d.b = t.choice_or("method", schema::normal_method, 0);
@@ -363,7 +363,7 @@ void read_normal(Table& c, Problem& p) {
   t.finish();
 }
 
-void read_tangential(Table& c, Problem& p) {
+void read_tangential(Table& c, CaseRecord& p) {
   ControlDigits& d = p.digits;
   Kinematics& k = p.kinematics;
   auto t = c.opt_table("tangential");
@@ -468,10 +468,10 @@ FrictionValues read_friction_values(Table& t, int law) {
   return fv;
 }
 
-void read_friction(Table& c, Problem& p) {
+void read_friction(Table& c, CaseRecord& p) {
   Friction& f = p.friction;
   auto t = c.opt_table("friction");
-  if (!t) return;  // Problem's default: Coulomb 0.3
+  if (!t) return;  // CaseRecord's default: Coulomb 0.3
   f.law = t->choice_or("law", schema::friction_law, 0);
   p.digits.l = f.law;
   std::vector<Table> rows = t->tables("rows");
@@ -513,7 +513,7 @@ void read_body(Table& m, std::string_view key, double& poisson, double& modulus)
   b.finish();
 }
 
-void read_material(Table& c, const Context& ctx, Problem& p) {
+void read_material(Table& c, const Context& ctx, CaseRecord& p) {
   Table t = c.table("material");
   Materials& m = p.materials;
   ControlDigits& d = p.digits;
@@ -617,7 +617,7 @@ void require_positive(Table& t, std::string_view key, double v) {
   if (!(v > 0.0)) t.fail_key(key, fmt::format("{} must be positive", v));
 }
 
-void read_grid(Table& c, Problem& p) {
+void read_grid(Table& c, CaseRecord& p) {
   Table t = c.table("grid");
   PotentialContact& pc = p.potential;
   const std::array<std::string_view, 4> kinds{"rectangle", "hertz", "hertz_2d", "sdec"};
@@ -714,7 +714,7 @@ void read_grid(Table& c, Problem& p) {
   }
 }
 
-void read_geometry(Table& c, Problem& p) {
+void read_geometry(Table& c, CaseRecord& p) {
   const PotentialContact& pc = p.potential;
   UndeformedDistance& ud = p.geometry;
   ud = UndeformedDistance{};
@@ -797,7 +797,7 @@ void read_geometry(Table& c, Problem& p) {
   t.finish();
 }
 
-void read_output(Table& c, Problem& p) {
+void read_output(Table& c, CaseRecord& p) {
   ControlDigits& d = p.digits;
   if (auto t = c.opt_table("output")) {
     d.o = t->integer_in("report_level", d.o, 0, 5);
@@ -821,7 +821,7 @@ void read_output(Table& c, Problem& p) {
   }
 }
 
-void read_damping(Table& c, Problem& p) {
+void read_damping(Table& c, CaseRecord& p) {
   p.damping = Damping{};
   p.digits.m2 = 0;
   auto t = c.opt_table("damping");
@@ -845,7 +845,7 @@ void read_heat_body(Table& t, std::string_view key, double& temp, double& cp, do
   b.finish();
 }
 
-void read_heat(Table& c, Problem& p) {
+void read_heat(Table& c, CaseRecord& p) {
   p.digits.h = 0;
   auto t = c.opt_table("heat");
   if (!t) return;
@@ -932,7 +932,7 @@ SubsurfaceBlock read_subsurface_block(Table& b) {
   return s;
 }
 
-void read_subsurface(Table& c, Problem& p) {
+void read_subsurface(Table& c, CaseRecord& p) {
   p.digits.s = 0;
   p.subsurface = Subsurface{};
   auto t = c.opt_table("subsurface");
@@ -948,7 +948,7 @@ void read_subsurface(Table& c, Problem& p) {
 }
 
 /// Checks that need the grid: per-element arrays and friction rows.
-void check_grid_sizes(Table& c, const Problem& p) {
+void check_grid_sizes(Table& c, const CaseRecord& p) {
   const std::size_t n = element_count(p.potential);
   const Kinematics& k = p.kinematics;
   if (k.extra_slip_mode == 9 && k.extra_slip.size() != 2 * n) {
@@ -964,14 +964,14 @@ void check_grid_sizes(Table& c, const Problem& p) {
   }
 }
 
-Problem read_case(Table& c, const Context& ctx, Sequence& seq, const std::string& file) {
-  Problem p;
+CaseRecord read_case(Table& c, const Context& ctx, Sequence& seq, const std::string& file) {
+  CaseRecord p;
   p.source.file = file;
   p.source.first_line = c.line();
   ControlDigits& d = p.digits;
   auto warn = [&p](std::string text) { p.source.warnings.push_back(std::move(text)); };
 
-  (void)c.opt_text("name");  // a label for humans; Problem has no place for it
+  (void)c.opt_text("name");  // a label for humans; CaseRecord has no place for it
   p.result_element = c.integer_in("result_element", 0, 0, 999);
   p.contact_problem = c.integer_in("contact_problem", 1, 1, 9);
   d.r = c.boolean_or("solve", true) ? 1 : 3;
@@ -1050,9 +1050,9 @@ Problem read_case(Table& c, const Context& ctx, Sequence& seq, const std::string
 
 }  // namespace
 
-std::vector<Problem> read_toml_string(const std::string& text, const std::string& name,
-                                      const std::filesystem::path& base_dir,
-                                      const TomlReadOptions& options) {
+std::vector<CaseRecord> read_toml_string(const std::string& text, const std::string& name,
+                                         const std::filesystem::path& base_dir,
+                                         const TomlReadOptions& options) {
   toml::table root;
   try {
     root = toml::parse(std::string_view(text), std::string_view(name));
@@ -1070,14 +1070,14 @@ std::vector<Problem> read_toml_string(const std::string& text, const std::string
   if (cases.empty()) top.fail("no [[case]] found");
   const Context ctx{base_dir, options};
   Sequence seq;
-  std::vector<Problem> problems;
+  std::vector<CaseRecord> problems;
   problems.reserve(cases.size());
   for (Table& c : cases) problems.push_back(read_case(c, ctx, seq, name));
   return problems;
 }
 
-std::vector<Problem> read_toml_file(const std::filesystem::path& path,
-                                    const TomlReadOptions& options) {
+std::vector<CaseRecord> read_toml_file(const std::filesystem::path& path,
+                                       const TomlReadOptions& options) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw InputError(path.string(), 0, "cannot open input file");
   std::ostringstream text;

@@ -6,27 +6,27 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 
 namespace rollcontact::format {
 
 /// Choices of the TOML reader.
 struct TomlReadOptions {
   /// A missing influence-coefficient file (influence = "from_file") is an InputError. When false
-  /// (default) the case gets Problem::source.case_error, as the .inp reader does.
+  /// (default) the case gets CaseRecord::source.case_error, as the .inp reader does.
   bool missing_files_are_errors = false;
 };
 
-/// Reads every [[case]] of a TOML case file, in order. The control digits of each Problem are
+/// Reads every [[case]] of a TOML case file, in order. The control digits of each CaseRecord are
 /// set to their explicit values (D=2, Z=2, C = influence type, L = law, ...). Throws InputError
 /// naming file, line and the key path (e.g. "case[2].normal.force_N") for malformed input,
 /// unknown keys, wrong types and out-of-range values.
-std::vector<Problem> read_toml_file(const std::filesystem::path& path,
-                                    const TomlReadOptions& options = {});
+std::vector<CaseRecord> read_toml_file(const std::filesystem::path& path,
+                                       const TomlReadOptions& options = {});
 
 /// Same from a string; `name` is used in messages, `base_dir` resolves relative file names.
-std::vector<Problem> read_toml_string(const std::string& text, const std::string& name,
-                                      const std::filesystem::path& base_dir = {},
-                                      const TomlReadOptions& options = {});
+std::vector<CaseRecord> read_toml_string(const std::string& text, const std::string& name,
+                                         const std::filesystem::path& base_dir = {},
+                                         const TomlReadOptions& options = {});
 
 }  // namespace rollcontact::format

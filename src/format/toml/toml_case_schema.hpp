@@ -9,7 +9,7 @@
 
 namespace rollcontact::format::toml_schema {
 
-/// One named choice and the digit (or code) it stands for in a Problem.
+/// One named choice and the digit (or code) it stands for in a CaseRecord.
 struct Choice {
   int code;
   std::string_view name;

@@ -52,7 +52,7 @@ std::string quote(std::string_view text) {
 
 /// Name of `code` in `choices`; a value without a name cannot be expressed in a case file.
 std::string named(std::span<const schema::Choice> choices, int code, std::string_view what,
-                  const Problem& p) {
+                  const CaseRecord& p) {
   const std::string_view n = schema::name_of(choices, code);
   if (n.empty()) {
     throw Error(fmt::format("case {}: {} = {} has no TOML case-file equivalent", p.case_number,
@@ -86,7 +86,7 @@ std::string pair(double a, double b) {
 /// Writes one case; `out` receives TOML text.
 class CaseWriter {
  public:
-  CaseWriter(std::string& out, const Problem& p, const std::filesystem::path& base_dir)
+  CaseWriter(std::string& out, const CaseRecord& p, const std::filesystem::path& base_dir)
       : out_(out), p_(p), base_dir_(base_dir) {}
 
   void write() {
@@ -467,22 +467,22 @@ class CaseWriter {
   const PotentialContact& pc_() const { return p_.potential; }
 
   std::string& out_;
-  const Problem& p_;
+  const CaseRecord& p_;
   const std::filesystem::path& base_dir_;
 };
 
 }  // namespace
 
-std::string write_toml_string(const std::vector<Problem>& problems,
+std::string write_toml_string(const std::vector<CaseRecord>& problems,
                               const std::filesystem::path& base_dir) {
   std::string out =
       "# rollcontact case file (docs/case-files.md). Units: mm, N, N/mm² (MPa), s, rad.\n";
   out += fmt::format("version = {}\n", toml_schema::version);
-  for (const Problem& p : problems) CaseWriter(out, p, base_dir).write();
+  for (const CaseRecord& p : problems) CaseWriter(out, p, base_dir).write();
   return out;
 }
 
-void write_toml_file(const std::filesystem::path& path, const std::vector<Problem>& problems) {
+void write_toml_file(const std::filesystem::path& path, const std::vector<CaseRecord>& problems) {
   write_file_atomically(path, write_toml_string(problems, path.parent_path()));
 }
 

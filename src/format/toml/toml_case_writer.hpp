@@ -7,18 +7,18 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
+#include "format/inp/case_record.hpp"
 
 namespace rollcontact::format {
 
 /// The TOML text of `problems`, one [[case]] each, in order. Only the values that matter for
 /// each case's choices are written (e.g. no rolling step for a shift). `base_dir` is the folder
 /// the file will live in: influence-coefficient file names are written relative to it. Throws
-/// rollcontact::Error for a Problem holding a value the schema has no name for (e.g. L=5).
-std::string write_toml_string(const std::vector<Problem>& problems,
+/// rollcontact::Error for a CaseRecord holding a value the schema has no name for (e.g. L=5).
+std::string write_toml_string(const std::vector<CaseRecord>& problems,
                               const std::filesystem::path& base_dir = {});
 
 /// Writes write_toml_string(problems, path's folder) to `path` atomically.
-void write_toml_file(const std::filesystem::path& path, const std::vector<Problem>& problems);
+void write_toml_file(const std::filesystem::path& path, const std::vector<CaseRecord>& problems);
 
 }  // namespace rollcontact::format

@@ -77,31 +77,32 @@ TEST(CreepTable, CreepagesFollowTheNonDimensionalDefinition) {
   EXPECT_NEAR(s.cphi, 0.3 * 2.0 / s.rho, 1e-15);
 }
 
-TEST(CreepTable, ProblemsUseTheMethodDigits) {
+TEST(CreepTable, ProblemsUseTheMethod) {
+  using model::TangentialCompliance;
   const TableCase tc = table_cases()[1000];
   TableSettings s;
-  Problem p = table_problem(tc, s);
-  EXPECT_EQ(p.digits.t, 3);
-  EXPECT_EQ(p.digits.n, 1);
-  EXPECT_EQ(p.digits.p, 2);
-  EXPECT_EQ(p.digits.b, 0);
-  EXPECT_EQ(p.digits.m, 0);
+  model::PatchProblem p = table_problem(tc, s);
+  EXPECT_EQ(p.tangential.kind, model::TangentialKind::SteadyRolling);
+  EXPECT_EQ(p.normal.kind, model::NormalLoadKind::Force);
+  EXPECT_FALSE(p.sequence.continue_previous);
+  EXPECT_EQ(p.normal.pressure, model::PressureModel::ExactHalfSpace);
+  EXPECT_EQ(p.bodies.compliance, TangentialCompliance::ExactHalfSpace);
   EXPECT_EQ(p.potential.ipotcn, -3);
   EXPECT_EQ(p.potential.mx, 11);
   EXPECT_EQ(p.potential.my, 11);
   EXPECT_DOUBLE_EQ(p.potential.values[2], 11.0 / 7.0);
-  EXPECT_EQ(p.kinematics.fn, 82000.0);
-  EXPECT_EQ(p.kinematics.veloc, 10000.0);
+  EXPECT_EQ(p.normal.force_N, 82000.0);
+  EXPECT_EQ(p.rolling.velocity_mm_per_s, 10000.0);
   s.method = TableMethod::Fastsim1;
   p = table_problem(tc, s);
-  EXPECT_EQ(p.digits.m, 2);
-  EXPECT_EQ(p.digits.b, 2);
-  EXPECT_GT(p.materials.model_params[0], 0.0);
+  EXPECT_EQ(p.bodies.compliance, TangentialCompliance::FastsimOneFlexibility);
+  EXPECT_EQ(p.normal.pressure, model::PressureModel::EllipticHertzian);
+  EXPECT_GT(p.bodies.simplified.flexibility_mm3_N, 0.0);
   s.method = TableMethod::FaStrip;
   s.bound = 3;
   p = table_problem(tc, s);
-  EXPECT_EQ(p.digits.m, 5);
-  EXPECT_EQ(p.digits.b, 3);
+  EXPECT_EQ(p.bodies.compliance, TangentialCompliance::FaStrip);
+  EXPECT_EQ(p.normal.pressure, model::PressureModel::ParabolicHertzian);
   EXPECT_EQ(parse_table_method("fastsim3"), TableMethod::Fastsim3);
   EXPECT_THROW(parse_table_method("fastsim"), InputError);
 }
@@ -165,7 +166,7 @@ TEST(CreepTable, SolvesWithTheExpectedSigns) {
   // Pure positive longitudinal creepage, full slip: Fx = −μFN, no lateral force.
   const auto all = table_cases();
   const TableCase tc = all[2 * 644 + 3 * 23 + 22];  // a/b = 1, spin 0, θ = 0°, m = 12
-  State state;
+  PatchSolver state;
   for (TableMethod m : {TableMethod::Exact, TableMethod::Fastsim1, TableMethod::Fastsim3}) {
     TableSettings s;
     s.method = m;

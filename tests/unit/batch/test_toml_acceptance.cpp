@@ -25,10 +25,10 @@ TEST(TomlAcceptance, CattaneoCase1SolvesIdenticallyFromTomlAndInp) {
   const auto from_inp = format::read_inp_file(examples_dir / "cattaneo.inp");
   const auto from_toml =
       format::read_toml_string(format::write_toml_string(from_inp), "cattaneo.toml");
-  State s1;
-  State s2;
-  const Solution a = solve(from_inp.at(0), s1);
-  const Solution b = solve(from_toml.at(0), s2);
+  PatchSolver s1;
+  PatchSolver s2;
+  const Solution a = solve_case(from_inp.at(0), s1);
+  const Solution b = solve_case(from_toml.at(0), s2);
   ASSERT_TRUE(a.solver.converged);
   EXPECT_EQ(a.totals.fn, b.totals.fn);
   EXPECT_EQ(a.totals.pen, b.totals.pen);
@@ -59,8 +59,8 @@ TEST(TomlAcceptance, ExamplePairsDescribeTheSameProblems) {
     inp.replace_extension(".inp");
     SCOPED_TRACE(entry.path().string());
     ASSERT_TRUE(std::filesystem::exists(inp)) << "missing .inp twin";
-    std::vector<Problem> a;
-    std::vector<Problem> b;
+    std::vector<format::CaseRecord> a;
+    std::vector<format::CaseRecord> b;
     ASSERT_NO_THROW(a = format::read_toml_file(entry.path()));
     ASSERT_NO_THROW(b = format::read_inp_file(inp));
     test::expect_same_problems(a, b);

@@ -22,7 +22,7 @@ const std::filesystem::path kExamples = ROLLCONTACT_EXAMPLES_DIR;
     GTEST_SKIP() << "example folder not found: " << kExamples.string(); \
   }
 
-std::vector<Problem> read_example(const std::string& name) {
+std::vector<format::CaseRecord> read_example(const std::string& name) {
   return read_inp_file(kExamples / name);
 }
 
@@ -46,7 +46,7 @@ TEST(InpExamples, AllModule3ExamplesParse) {
   REQUIRE_EXAMPLES();
   for (const auto& ex : kModule3Examples) {
     SCOPED_TRACE(ex.file);
-    std::vector<Problem> problems;
+    std::vector<format::CaseRecord> problems;
     ASSERT_NO_THROW(problems = read_example(ex.file));
     EXPECT_EQ(problems.size(), ex.cases);
     for (std::size_t k = 0; k < problems.size(); ++k) {
@@ -84,7 +84,7 @@ TEST(InpExamples, CattaneoWorkedExample) {
   const auto problems = read_example("cattaneo.inp");
   ASSERT_EQ(problems.size(), 2u);
 
-  const Problem& c1 = problems[0];
+  const format::CaseRecord& c1 = problems[0];
   EXPECT_EQ(c1.digits.t, 0);
   EXPECT_EQ(c1.digits.n, 1);
   EXPECT_EQ(c1.potential.ipotcn, -3);
@@ -93,7 +93,7 @@ TEST(InpExamples, CattaneoWorkedExample) {
   EXPECT_EQ(c1.solver.maxgs, 100);
   EXPECT_DOUBLE_EQ(c1.solver.eps, 1e-4);
 
-  const Problem& c = problems[1];
+  const format::CaseRecord& c = problems[1];
   EXPECT_EQ(c.source.module_line, 34);
   EXPECT_EQ(c.source.first_line, 35);
   EXPECT_EQ(c.source.digit_lines[1], 36);
@@ -146,7 +146,7 @@ TEST(InpExamples, Carter2dDebugWord) {
   REQUIRE_EXAMPLES();
   const auto problems = read_example("carter2d.inp");
   ASSERT_EQ(problems.size(), 1u);
-  const Problem& c = problems[0];
+  const format::CaseRecord& c = problems[0];
   EXPECT_EQ(c.digits.x, 1);
   EXPECT_EQ(c.digits.h, 0);
   EXPECT_EQ(c.digits.o, 5);
@@ -178,7 +178,7 @@ TEST(InpExamples, TractcurvKeepsAcrossSeries) {
   EXPECT_EQ(problems[1].solver.maxgs, 80);
   EXPECT_DOUBLE_EQ(problems[1].kinematics.cksi, 0.0004);
   // Series 2 (case 31): exponential falling friction, interface layer M=4.
-  const Problem& s2 = problems[30];
+  const format::CaseRecord& s2 = problems[30];
   EXPECT_EQ(s2.digits.l, 4);
   EXPECT_EQ(s2.friction.law, 4);
   EXPECT_DOUBLE_EQ(s2.friction.fkin, 0.14);
@@ -193,7 +193,7 @@ TEST(InpExamples, TractcurvKeepsAcrossSeries) {
   EXPECT_DOUBLE_EQ(problems[31].friction.fkin, 0.14);
   EXPECT_DOUBLE_EQ(problems[31].materials.model_params[0], 8200.0);
   // Series 4 (case 91): modified Fastsim, M=3, static 0.36.
-  const Problem& s4 = problems[90];
+  const format::CaseRecord& s4 = problems[90];
   EXPECT_EQ(s4.digits.m, 3);
   EXPECT_EQ(s4.digits.b, 3);
   EXPECT_NEAR(s4.friction.fstat, 0.36, 1e-12);
@@ -215,7 +215,7 @@ TEST(InpExamples, CattToCartSequences) {
   EXPECT_EQ(problems[57].potential.mx, 90);  // case 58 starts the second sequence
   EXPECT_EQ(problems[57].digits.p, 2);
   // Third sequence: T=1 with a grid shifted by one element per case (D=2, P=0).
-  const Problem& c116 = problems[115];
+  const format::CaseRecord& c116 = problems[115];
   EXPECT_EQ(c116.digits.p, 0);
   EXPECT_EQ(c116.digits.d, 2);
   EXPECT_EQ(c116.digits.n, 0);
@@ -229,13 +229,13 @@ TEST(InpExamples, ConformalIbase9AndExtraSlip) {
   REQUIRE_EXAMPLES();
   const auto problems = read_example("conformal.inp");
   ASSERT_EQ(problems.size(), 5u);
-  const Problem& c2 = problems[1];
+  const format::CaseRecord& c2 = problems[1];
   EXPECT_EQ(c2.geometry.ibase, 9);
   ASSERT_EQ(c2.geometry.values.size(), 1989u);
   EXPECT_DOUBLE_EQ(c2.geometry.values.front(), 0.06625925);
   EXPECT_DOUBLE_EQ(c2.geometry.values.back(), 0.06625925);
   // Case 3: C=9 with a coefficient file that is not provided -> per-case error, no throw.
-  const Problem& c3 = problems[2];
+  const format::CaseRecord& c3 = problems[2];
   EXPECT_EQ(c3.digits.c, 9);
   EXPECT_EQ(c3.materials.influence_type, 9);
   EXPECT_NE(c3.materials.influence_file.find("inflcf_r10_mx51.txt"), std::string::npos);
@@ -244,7 +244,7 @@ TEST(InpExamples, ConformalIbase9AndExtraSlip) {
   EXPECT_EQ(c3.solver.maxout, 1);               // K = 0 -> MAXOUT overridden
   EXPECT_FALSE(c3.source.warnings.empty());
   // Case 4: E=9, 2*51*39 values.
-  const Problem& c4 = problems[3];
+  const format::CaseRecord& c4 = problems[3];
   EXPECT_TRUE(c4.source.case_error.empty());
   EXPECT_EQ(c4.materials.influence_type, 2);
   EXPECT_EQ(c4.kinematics.extra_slip_mode, 9);
@@ -275,7 +275,7 @@ TEST(InpExamples, VeldepFrictionSolverLines) {
   REQUIRE_EXAMPLES();
   const auto problems = read_example("veldep_fric.inp");
   ASSERT_EQ(problems.size(), 53u);
-  const Problem& c1 = problems[0];
+  const format::CaseRecord& c1 = problems[0];
   EXPECT_EQ(c1.digits.g, 2);
   EXPECT_EQ(c1.solver.method, 2);
   EXPECT_EQ(c1.solver.maxgs, 5000);
@@ -292,7 +292,7 @@ TEST(InpExamples, VeldepFrictionSolverLines) {
   EXPECT_DOUBLE_EQ(c1.geometry.rm, 460.0);
   EXPECT_DOUBLE_EQ(c1.geometry.dy1, 20.0);
   EXPECT_EQ(c1.geometry.coeffs.size(), 2u);
-  const Problem& c2 = problems[1];
+  const format::CaseRecord& c2 = problems[1];
   EXPECT_EQ(c2.digits.g, 4);
   EXPECT_EQ(c2.solver.method, 4);
   EXPECT_EQ(c2.solver.inislp, 1);
@@ -368,7 +368,7 @@ TEST(InpExamples, BentallMaterialsAndForces) {
   REQUIRE_EXAMPLES();
   const auto problems = read_example("bentall.inp");
   ASSERT_EQ(problems.size(), 6u);
-  const Problem& c1 = problems[0];
+  const format::CaseRecord& c1 = problems[0];
   EXPECT_EQ(c1.result_element, 0);
   EXPECT_EQ(c1.contact_problem, 1);
   EXPECT_NEAR(c1.kinematics.chi, 180.0 * kDeg, 1e-15);
@@ -377,7 +377,7 @@ TEST(InpExamples, BentallMaterialsAndForces) {
   EXPECT_DOUBLE_EQ(c1.materials.gg2, 82000.0);
   EXPECT_EQ(c1.potential.mx, 216);
   EXPECT_DOUBLE_EQ(c1.friction.fkin, 0.0001);
-  const Problem& c2 = problems[1];
+  const format::CaseRecord& c2 = problems[1];
   EXPECT_EQ(c2.digits.f, 1);
   EXPECT_EQ(c2.digits.i, 1);
   EXPECT_EQ(c2.digits.l, 0);

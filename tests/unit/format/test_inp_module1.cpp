@@ -25,8 +25,8 @@ std::vector<InputCase> read(const std::string& text) {
   return read_input_string(text, "m1.inp", kData);
 }
 
-const WheelRailProblem& wr(const std::vector<InputCase>& cases, std::size_t k) {
-  return std::get<WheelRailProblem>(cases.at(k));
+const format::WheelRailRecord& wr(const std::vector<InputCase>& cases, std::size_t k) {
+  return std::get<format::WheelRailRecord>(cases.at(k));
 }
 
 // Case 1 of a right wheel on track; `extra` replaces the control words where given.
@@ -52,7 +52,7 @@ std::string first_case(const std::string& w1 = "1203100", const std::string& w2 
 TEST(InpModule1, OptionalValuesAndDefaults) {
   const auto cases = read(first_case() + " 0 MODULE\n");
   ASSERT_EQ(cases.size(), 1u);
-  const WheelRailProblem& c = wr(cases, 0);
+  const format::WheelRailRecord& c = wr(cases, 0);
   EXPECT_EQ(c.npot_max, 5000);
   const auto& ds = c.discretisation;
   EXPECT_DOUBLE_EQ(ds.ds, 0.25);
@@ -97,12 +97,12 @@ TEST(InpModule1, KeepSemanticsAndOverrides) {
                            " 0 MODULE\n";
   const auto cases = read(text);
   ASSERT_EQ(cases.size(), 3u);
-  const WheelRailProblem& c1 = wr(cases, 0);
+  const format::WheelRailRecord& c1 = wr(cases, 0);
   // First case of the element: P=0 and I=1 are overridden with a warning.
   EXPECT_EQ(c1.digits.p, 2);
   EXPECT_EQ(c1.digits.i, 0);
   EXPECT_EQ(c1.source.warnings.size(), 2u);
-  const WheelRailProblem& c2 = wr(cases, 1);
+  const format::WheelRailRecord& c2 = wr(cases, 1);
   // C=0 is forced to 1 (warning); everything not read is kept.
   EXPECT_EQ(c2.digits.c, 1);
   ASSERT_EQ(c2.source.warnings.size(), 1u);
@@ -115,7 +115,7 @@ TEST(InpModule1, KeepSemanticsAndOverrides) {
   EXPECT_EQ(c2.rail.profile.y.size(), 61u);
   EXPECT_EQ(c2.npot_max, 5000);
   // E=0 keeps position and velocity too.
-  const WheelRailProblem& c3 = wr(cases, 2);
+  const format::WheelRailRecord& c3 = wr(cases, 2);
   EXPECT_DOUBLE_EQ(c3.motion.y, 2.5);
   EXPECT_EQ(c3.case_number, 3);
 }
@@ -141,7 +141,7 @@ TEST(InpModule1, RollerRigMasslessRailAndFlexibleWheelset) {
       " 0 MODULE\n";
   const auto cases = read(text);
   ASSERT_EQ(cases.size(), 1u);
-  const WheelRailProblem& c = wr(cases, 0);
+  const format::WheelRailRecord& c = wr(cases, 0);
   EXPECT_EQ(c.result_element, 2);
   EXPECT_TRUE(c.is_roller());
   EXPECT_EQ(c.digits.x, 1);
@@ -177,9 +177,9 @@ TEST(InpModule1, CaseNumbersAreSharedWithModule3) {
   EXPECT_EQ(input_case_module(cases[0]), 3);
   EXPECT_EQ(input_case_module(cases[1]), 1);
   EXPECT_EQ(input_case_module(cases[2]), 3);
-  EXPECT_EQ(std::get<Problem>(cases[0]).case_number, 1);
+  EXPECT_EQ(std::get<format::CaseRecord>(cases[0]).case_number, 1);
   EXPECT_EQ(wr(cases, 1).case_number, 2);
-  EXPECT_EQ(std::get<Problem>(cases[2]).case_number, 3);
+  EXPECT_EQ(std::get<format::CaseRecord>(cases[2]).case_number, 3);
   // The module-3 reader refuses files with module-1 cases, at the module line.
   try {
     read_inp_string(module3 + first_case() + " 0 MODULE\n", "m1.inp", kData);

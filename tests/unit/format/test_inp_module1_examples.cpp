@@ -22,11 +22,11 @@ constexpr double kDeg = std::numbers::pi / 180.0;
     GTEST_SKIP() << "example folder not found: " << kExamples.string(); \
   }
 
-std::vector<WheelRailProblem> wheel_rail_cases(const std::string& name) {
-  std::vector<WheelRailProblem> out;
+std::vector<format::WheelRailRecord> wheel_rail_cases(const std::string& name) {
+  std::vector<format::WheelRailRecord> out;
   for (auto& c : read_input_cases(kExamples / name)) {
     EXPECT_EQ(input_case_module(c), 1);
-    out.push_back(std::get<WheelRailProblem>(std::move(c)));
+    out.push_back(std::get<format::WheelRailRecord>(std::move(c)));
   }
   return out;
 }
@@ -44,7 +44,7 @@ TEST(InpModule1Examples, CaseCounts) {
                          {"mbench_a22_varfric.inp", 7},
                          {"wheelflat.inp", 26}}) {
     SCOPED_TRACE(ex.file);
-    std::vector<WheelRailProblem> cases;
+    std::vector<format::WheelRailRecord> cases;
     ASSERT_NO_THROW(cases = wheel_rail_cases(ex.file));
     ASSERT_EQ(cases.size(), ex.cases);
     for (std::size_t k = 0; k < cases.size(); ++k) {
@@ -62,7 +62,7 @@ TEST(InpModule1Examples, CaseCounts) {
 TEST(InpModule1Examples, MbenchLeftCase1AsAnnotated) {
   REQUIRE_EXAMPLES();
   const auto cases = wheel_rail_cases("mbench_a22_left.inp");
-  const WheelRailProblem& c = cases.at(0);
+  const format::WheelRailRecord& c = cases.at(0);
   EXPECT_EQ(c.source.module_line, 12);
   EXPECT_EQ(c.source.first_line, 13);
   EXPECT_EQ(c.config, 0);
@@ -137,7 +137,7 @@ TEST(InpModule1Examples, MbenchLeftCase1AsAnnotated) {
   EXPECT_DOUBLE_EQ(c.motion.vpitch, -4.34811810);
 
   // Follow-up cases: L=1, D=1, C=1, Z=0, E=2, G=1: only position and velocity are read.
-  const WheelRailProblem& c2 = cases.at(1);
+  const format::WheelRailRecord& c2 = cases.at(1);
   EXPECT_EQ(c2.digits.l, 1);
   EXPECT_EQ(c2.digits.d, 1);
   EXPECT_EQ(c2.digits.z, 0);
@@ -166,7 +166,7 @@ TEST(InpModule1Examples, MbenchRightIsRightWheel) {
 TEST(InpModule1Examples, KpecUsesModifiedFastsimMaterial) {
   REQUIRE_EXAMPLES();
   const auto cases = wheel_rail_cases("mbench_a22_kpec.inp");
-  const WheelRailProblem& c = cases.at(0);
+  const format::WheelRailRecord& c = cases.at(0);
   EXPECT_EQ(c.digits.b, 5);
   EXPECT_EQ(c.digits.m, 3);
   EXPECT_EQ(c.digits.a, 1);
@@ -180,7 +180,7 @@ TEST(InpModule1Examples, KpecUsesModifiedFastsimMaterial) {
 TEST(InpModule1Examples, VarfricTablesAndSubsurface) {
   REQUIRE_EXAMPLES();
   const auto cases = wheel_rail_cases("mbench_a22_varfric.inp");
-  const WheelRailProblem& c = cases.at(0);
+  const format::WheelRailRecord& c = cases.at(0);
   EXPECT_EQ(c.digits.v, 1);
   EXPECT_EQ(c.digits.s, 3);
   ASSERT_EQ(c.variable_friction.positions.size(), 2u);
@@ -195,14 +195,14 @@ TEST(InpModule1Examples, VarfricTablesAndSubsurface) {
   ASSERT_EQ(c.subsurface.blocks.size(), 1u);
   EXPECT_EQ(c.subsurface.blocks[0].z.size(), 11u);
   // Case 5: conformal discretisation D=4 with a new discretisation line, friction kept (V=1).
-  const WheelRailProblem& c4 = cases.at(4);
+  const format::WheelRailRecord& c4 = cases.at(4);
   EXPECT_EQ(c4.digits.d, 4);
   EXPECT_EQ(c4.discretisation.method, 4);
   EXPECT_DOUBLE_EQ(c4.discretisation.d_sep, 9.0);
   EXPECT_EQ(c4.variable_friction.positions.size(), 2u);
   EXPECT_EQ(cases.at(2).digits.s, 1);  // stored subsurface points
   // Case 6: V=2, friction against the track position.
-  const WheelRailProblem& c5 = cases.at(5);
+  const format::WheelRailRecord& c5 = cases.at(5);
   EXPECT_EQ(c5.digits.v, 2);
   ASSERT_EQ(c5.variable_friction.positions.size(), 2u);
   EXPECT_DOUBLE_EQ(c5.variable_friction.positions[1], 100.0);
@@ -213,7 +213,7 @@ TEST(InpModule1Examples, VarfricTablesAndSubsurface) {
 TEST(InpModule1Examples, WheelflatSlicesAndPitch) {
   REQUIRE_EXAMPLES();
   const auto cases = wheel_rail_cases("wheelflat.inp");
-  const WheelRailProblem& c = cases.at(0);
+  const format::WheelRailRecord& c = cases.at(0);
   EXPECT_DOUBLE_EQ(c.discretisation.dx, 0.4);
   EXPECT_DOUBLE_EQ(c.track.cant, 0.02);
   EXPECT_EQ(c.rail.mirror_z, -1);

@@ -32,7 +32,7 @@ std::string keep_case(int r = 1, double fx = -0.25) {
          " 0.0 0.0\n";
 }
 
-std::vector<Problem> read(const std::string& text) {
+std::vector<format::CaseRecord> read(const std::string& text) {
   return read_inp_string(text, "t.inp");
 }
 
@@ -96,7 +96,7 @@ TEST(InpReader, FirstCaseOverridesPAndIWithWarnings) {
 
 TEST(InpReader, KeepDigitsReuseStoredValues) {
   const auto p = read(" 3 MODULE\n" + first_case() + " 3 MODULE\n" + keep_case(1, -0.125));
-  const Problem& k = p[1];
+  const format::CaseRecord& k = p[1];
   EXPECT_EQ(k.digits.g, 1);
   EXPECT_EQ(k.solver.maxgs, 100);
   EXPECT_DOUBLE_EQ(k.solver.eps, 1e-4);
@@ -156,7 +156,7 @@ TEST(InpReader, GdSteadyLineAndVariableFrictionPerRow) {
       " 1\n 4 3 -2 -1.5 1 1\n 1 1\n 0.01 0 0.01 0 0 0\n"
       " 0.30 0.10 100. 0.0 1.0\n 0.31 0.10 100. 0.0 1.0\n 0.32 0.10 100. 0.0 1.0\n 0.5 10.\n";
   const auto p = read(text);
-  const Problem& c = p.at(0);
+  const format::CaseRecord& c = p.at(0);
   EXPECT_EQ(c.solver.method, 5);
   EXPECT_DOUBLE_EQ(c.solver.gd.fdecay, 0.9);
   EXPECT_EQ(c.solver.gd.kdowfb, 2);
@@ -179,7 +179,7 @@ TEST(InpReader, ConformalC4IbaseIplanVariants) {
       " 3 MODULE\n 001120\n 100020\n 0100541\n 9.0 0.1 0.0 0.0\n"
       " 1 4\n 0.01 0 0.01 0 0 0\n 2\n -1 0 -1 1\n 0 1 -1 1\n 0.5\n";
   const auto p = read(text);
-  const Problem& c = p.at(0);
+  const format::CaseRecord& c = p.at(0);
   EXPECT_EQ(c.materials.influence_type, 4);
   EXPECT_EQ(c.materials.conformal.variant, 2);
   ASSERT_EQ(c.materials.conformal.alpha.size(), 2u);
@@ -188,7 +188,7 @@ TEST(InpReader, ConformalC4IbaseIplanVariants) {
   EXPECT_EQ(c.geometry.ibase, 3);
   EXPECT_EQ(c.geometry.coeffs.size(), 8u);
   EXPECT_EQ(c.geometry.planform.size(), 8u);
-  const Problem& c2 = p.at(1);
+  const format::CaseRecord& c2 = p.at(1);
   EXPECT_EQ(c2.materials.influence_type, 4);  // C=0 keeps the coefficient type
   EXPECT_EQ(c2.geometry.iplan, 4);
   EXPECT_EQ(c2.geometry.npatch, 2);

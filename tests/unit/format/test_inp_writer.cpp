@@ -19,9 +19,10 @@ const std::filesystem::path examples_dir{ROLLCONTACT_EXAMPLES_DIR};
 class InpWriterRoundTrip : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(InpWriterRoundTrip, WrittenInpReadsBackToSameProblems) {
-  const std::vector<Problem> original = read_inp_file(examples_dir / (GetParam() + ".inp"));
+  const std::vector<format::CaseRecord> original =
+      read_inp_file(examples_dir / (GetParam() + ".inp"));
   const std::string text = write_inp_string(original, examples_dir);
-  std::vector<Problem> again;
+  std::vector<format::CaseRecord> again;
   ASSERT_NO_THROW(again = read_inp_string(text, GetParam() + "_written.inp", examples_dir)) << text;
   test::expect_same_problems(original, again);
   EXPECT_EQ(write_inp_string(test::without_source(again), examples_dir),
@@ -59,7 +60,7 @@ TEST(InpWriter, WritesExplicitDigitsAndFullPrecision) {
 }
 
 TEST(InpWriter, ResultElementsGetModuleLines) {
-  Problem p;
+  format::CaseRecord p;
   p.result_element = 7;
   p.contact_problem = 2;
   p.digits.n = 1;

@@ -7,7 +7,7 @@ namespace rollcontact::format {
 namespace {
 
 TEST(JsonWriter, ShiftCaseWithSolvedUnknowns) {
-  Problem p;
+  format::CaseRecord p;
   p.case_number = 2;
   p.digits.t = 1;
   p.digits.f = 2;
@@ -39,7 +39,7 @@ TEST(JsonWriter, ShiftCaseWithSolvedUnknowns) {
 }
 
 TEST(JsonWriter, PrescribedValuesAndNonConvergence) {
-  Problem p;
+  format::CaseRecord p;
   p.digits.t = 3;
   p.digits.n = 0;
   p.kinematics.pen = 0.05;
@@ -57,7 +57,7 @@ TEST(JsonWriter, PrescribedValuesAndNonConvergence) {
 }
 
 TEST(JsonWriter, ErrorCaseAndDocument) {
-  Problem p;
+  format::CaseRecord p;
   p.case_number = 3;
   p.result_element = 4;
   const auto e = case_error_to_json(p, "file not found");

@@ -37,8 +37,8 @@ std::vector<double> numbers_of(const std::string& line) {
 }
 
 /// A 3 x 2 grid with 4 elements in contact, T=3 steady rolling, Coulomb friction.
-std::pair<Problem, Solution> small_case(int a_digit) {
-  Problem p;
+std::pair<format::CaseRecord, Solution> small_case(int a_digit) {
+  format::CaseRecord p;
   p.case_number = 7;
   p.digits.t = 3;
   p.digits.a = a_digit;

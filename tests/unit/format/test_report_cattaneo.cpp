@@ -1,5 +1,6 @@
-// Reproduces the result blocks of cattaneo.ref_out (cases 1 and 2) from a hand-filled Problem and
-// Solution whose numbers and element states are read back from the reference itself.
+// Reproduces the result blocks of cattaneo.ref_out (cases 1 and 2) from a hand-filled
+// format::CaseRecord and Solution whose numbers and element states are read back from the reference
+// itself.
 
 #include <gtest/gtest.h>
 
@@ -64,7 +65,7 @@ std::vector<std::string> reference_case(const std::string& name, int case_number
   return out;
 }
 
-std::vector<std::string> our_case(const Problem& p, const Solution& s) {
+std::vector<std::string> our_case(const format::CaseRecord& p, const Solution& s) {
   std::ostringstream os;
   write_case_report(os, p, s);
   std::vector<std::string> lines = split_lines(os.str());
@@ -107,8 +108,8 @@ void states_from_picture(const std::vector<std::string>& ref, Solution& s) {
   }
 }
 
-Problem cattaneo_problem(int case_number) {
-  Problem p;
+format::CaseRecord cattaneo_problem(int case_number) {
+  format::CaseRecord p;
   p.case_number = case_number;
   auto& d = p.digits;
   d.p = 2, d.b = 0, d.n = 1, d.s = 0;
@@ -219,7 +220,7 @@ void fields_from_table(const std::vector<std::string>& ref, double mu, Solution&
 TEST(ReportCattaneo, CaseOneNormalHertz) {
   const auto ref = reference_case("cattaneo", 1);
   ASSERT_GT(ref.size(), 50u);
-  const Problem p = cattaneo_problem(1);
+  const format::CaseRecord p = cattaneo_problem(1);
   Solution s = cattaneo_solution(1);
   states_from_picture(ref, s);
   expect_same(ref, our_case(p, s));
@@ -228,7 +229,7 @@ TEST(ReportCattaneo, CaseOneNormalHertz) {
 TEST(ReportCattaneo, CaseTwoShiftWithElementTable) {
   auto ref = reference_case("cattaneo", 2);
   ASSERT_GT(ref.size(), 200u);
-  const Problem p = cattaneo_problem(2);
+  const format::CaseRecord p = cattaneo_problem(2);
   Solution s = cattaneo_solution(2);
   states_from_picture(ref, s);
   fields_from_table(ref, 0.4, s);

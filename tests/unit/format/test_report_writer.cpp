@@ -18,7 +18,7 @@ Solution small_solution(int mx, int my) {
   return s;
 }
 
-std::string report(const Problem& p, const Solution& s) {
+std::string report(const format::CaseRecord& p, const Solution& s) {
   std::ostringstream os;
   write_case_report(os, p, s);
   return os.str();
@@ -29,7 +29,7 @@ bool has(const std::string& text, const std::string& part) {
 }
 
 TEST(ReportWriter, OutputLevelsSelectBlocks) {
-  Problem p;
+  format::CaseRecord p;
   p.case_number = 7;
   const Solution s = small_solution(3, 3);
   p.digits.o = 0;
@@ -54,7 +54,7 @@ TEST(ReportWriter, OutputLevelsSelectBlocks) {
 }
 
 TEST(ReportWriter, DigitEchoVariantsAndDescriptions) {
-  Problem p;
+  format::CaseRecord p;
   p.digits.o = 2;
   p.digits.v = 3;
   p.digits.t = 3;
@@ -74,7 +74,7 @@ TEST(ReportWriter, DigitEchoVariantsAndDescriptions) {
 }
 
 TEST(ReportWriter, FastsimAndLayerBlocks) {
-  Problem p;
+  format::CaseRecord p;
   p.digits.o = 2;
   p.digits.t = 3;
   p.digits.m = 3;
@@ -110,7 +110,7 @@ TEST(ReportWriter, FastsimAndLayerBlocks) {
 }
 
 TEST(ReportWriter, VariableFrictionRowsAreElided) {
-  Problem p;
+  format::CaseRecord p;
   p.digits.o = 2;
   p.digits.v = 3;
   for (int iy = 0; iy < 6; ++iy) p.friction.rows.push_back({0.1 * (iy + 1), 0.1 * (iy + 1), {}});
@@ -126,7 +126,7 @@ TEST(ReportWriter, VariableFrictionRowsAreElided) {
 }
 
 TEST(ReportWriter, ForceFilteringAndSolvedCreepage) {
-  Problem p;
+  format::CaseRecord p;
   p.digits.o = 1;
   p.digits.t = 2;
   p.digits.f = 1;
@@ -198,7 +198,7 @@ TEST(ReportWriter, FrameAndErrors) {
   EXPECT_TRUE(has(banner, "rollcontact"));
   EXPECT_TRUE(has(banner, version_string));
   os.str("");
-  Problem p;
+  format::CaseRecord p;
   p.case_number = 3;
   p.result_element = 2;
   write_case_error(os, p, "influence file missing\nsecond line");
@@ -212,7 +212,7 @@ TEST(ReportWriter, FrameAndErrors) {
 }
 
 TEST(ReportWriter, NotConvergedAndWarningsAreReported) {
-  Problem p;
+  format::CaseRecord p;
   p.digits.o = 1;
   Solution s = small_solution(2, 2);
   s.solver.converged = false;

@@ -29,10 +29,10 @@ class TomlRoundTrip : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(TomlRoundTrip, InpToTomlGivesSameProblems) {
   const auto path = examples_dir / (GetParam() + ".inp");
-  const std::vector<Problem> from_inp = read_inp_file(path);
+  const std::vector<format::CaseRecord> from_inp = read_inp_file(path);
   ASSERT_FALSE(from_inp.empty());
   const std::string toml = write_toml_string(from_inp, examples_dir);
-  std::vector<Problem> from_toml;
+  std::vector<format::CaseRecord> from_toml;
   ASSERT_NO_THROW(from_toml = read_toml_string(toml, GetParam() + ".toml", examples_dir)) << toml;
   test::expect_same_problems(from_inp, from_toml);
   // Writing what was read gives the same text again: the TOML form is a fixed point.
@@ -60,7 +60,7 @@ TEST(TomlRoundTrip, ExamplesCoverEveryFeatureOnce) {
   // temperature and several friction laws, so the round trips above are not only Hertz cases.
   std::set<int> t, s, h, l, m;
   for (const auto& name : module3_examples) {
-    for (const Problem& p : read_inp_file(examples_dir / (name + ".inp"))) {
+    for (const format::CaseRecord& p : read_inp_file(examples_dir / (name + ".inp"))) {
       t.insert(p.digits.t);
       s.insert(p.digits.s);
       h.insert(p.digits.h);

@@ -19,10 +19,10 @@ CombinedMaterial material(double g, double nu) {
   return CombinedMaterial{g, nu, 0.0};
 }
 
-Problem hertzian(int ipotcn, int mx, int my, std::array<double, 4> values, double fn) {
-  Problem p;
-  p.digits.n = 1;
-  p.kinematics.fn = fn;
+model::PatchProblem hertzian(int ipotcn, int mx, int my, std::array<double, 4> values, double fn) {
+  model::PatchProblem p;
+  p.normal.kind = model::NormalLoadKind::Force;
+  p.normal.force_N = fn;
   p.potential.ipotcn = ipotcn;
   p.potential.mx = mx;
   p.potential.my = my;
@@ -30,15 +30,16 @@ Problem hertzian(int ipotcn, int mx, int my, std::array<double, 4> values, doubl
   return p;
 }
 
-Problem quadratic(int ipotcn, int mx, int my, std::array<double, 4> values, double b1, double b3) {
-  Problem p;
+model::PatchProblem quadratic(int ipotcn, int mx, int my, std::array<double, 4> values, double b1,
+                              double b3) {
+  model::PatchProblem p;
   p.potential.ipotcn = ipotcn;
   p.potential.mx = mx;
   p.potential.my = my;
   p.potential.values = values;
-  p.geometry.ibase = 1;
-  p.geometry.iplan = 1;
-  p.geometry.coeffs = {b1, 0.0, b3, 0.0, 0.0, 0.0};
+  p.gap.ibase = 1;
+  p.gap.iplan = 1;
+  p.gap.coeffs = {b1, 0.0, b3, 0.0, 0.0, 0.0};
   return p;
 }
 
@@ -163,9 +164,9 @@ TEST(Discretisation, ConformalPerElementDistanceCount) {
     double v = 0.0;
     while (ss >> v) values.push_back(v);
   }
-  Problem p = quadratic(1, 51, 39, {-10.2, -7.8, 0.4, 0.4}, 0.0, 0.0);
-  p.geometry.ibase = 9;
-  p.geometry.values = values;
+  model::PatchProblem p = quadratic(1, 51, 39, {-10.2, -7.8, 0.4, 0.4}, 0.0, 0.0);
+  p.gap.ibase = 9;
+  p.gap.values = values;
   const Discretisation d = build_discretisation(p, material(82000.0, 0.28));
   EXPECT_EQ(d.h, values);
   EXPECT_NEAR(d.h[0], 0.06625925, 1e-15);  // first value in the file
@@ -187,17 +188,17 @@ TEST(Discretisation, TwoDimensionalHertz) {
   const double x = d4.grid.x_centre(3);
   EXPECT_NEAR(d4.h[d4.grid.index(3, 7)], 0.005 * x * x, 1e-16);
   // 2-D Hertz defines no approach: N = 0 is refused.
-  Problem p0 = hertzian(-4, 40, 10, {0.005, 5.0, 1.25, 0}, 5e4);
-  p0.digits.n = 0;
-  p0.kinematics.pen = 0.01;
+  model::PatchProblem p0 = hertzian(-4, 40, 10, {0.005, 5.0, 1.25, 0}, 5e4);
+  p0.normal.kind = model::NormalLoadKind::Approach;
+  p0.normal.approach_mm = 0.01;
   EXPECT_THROW(build_discretisation(p0, m), ProblemError);
 }
 
 TEST(Discretisation, HertzWithPrescribedApproach) {
   // N = 0: PEN from the kinematics; sphere R = 50 → a = √(PEN·R).
-  Problem p = hertzian(-1, 21, 21, {0.01, 0.01, 1.2, 0}, 0.0);
-  p.digits.n = 0;
-  p.kinematics.pen = 0.02;
+  model::PatchProblem p = hertzian(-1, 21, 21, {0.01, 0.01, 1.2, 0}, 0.0);
+  p.normal.kind = model::NormalLoadKind::Approach;
+  p.normal.approach_mm = 0.02;
   const Discretisation d = build_discretisation(p, material(200.0, 0.42));
   EXPECT_NEAR(d.hertz.aa, 1.0, 1e-13);
   EXPECT_NEAR(d.grid.dx, 2.4 / 21, 1e-14);
@@ -214,19 +215,17 @@ TEST(Discretisation, SdecUsesMeanHalfWidth) {
   EXPECT_NEAR(d.grid.xl, -6.6, 1e-14);
 }
 
-TEST(Discretisation, ErrorsNameTheCase) {
-  Problem p = quadratic(1, 3, 3, {0, 0, 1, 1}, 1, 1);
-  p.case_number = 7;
-  p.source.file = "demo.inp";
-  p.source.first_line = 42;
-  p.geometry.iplan = 2;
-  p.geometry.planform = {0, 0, 0, 0, 0, 1.0};  // form ≥ 0 everywhere
+TEST(Discretisation, GeometryErrorsSayWhatIsWrong) {
+  // Where the case came from is added by the front end (batch::solve_case, tested there).
+  model::PatchProblem p = quadratic(1, 3, 3, {0, 0, 1, 1}, 1, 1);
+  p.gap.iplan = 2;
+  p.gap.planform = {0, 0, 0, 0, 0, 1.0};  // form ≥ 0 everywhere
   try {
     build_discretisation(p, material(1.0, 0.3));
-    FAIL() << "expected ProblemError";
-  } catch (const ProblemError& e) {
+    FAIL() << "expected GeometryError";
+  } catch (const GeometryError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("demo.inp:42: case 7:"), std::string::npos) << what;
+    EXPECT_EQ(e.code(), ErrorCode::Discretisation);
     EXPECT_NE(what.find("excludes every element"), std::string::npos) << what;
   }
   // Hertzian options need a positive load and modulus.

@@ -10,6 +10,7 @@
 
 #include "post/subsurface.hpp"
 #include "post/subsurface_points.hpp"
+#include "rollcontact/model/patch_problem.hpp"
 #include "subs_table.hpp"
 
 namespace rollcontact::post {
@@ -24,21 +25,19 @@ const std::vector<double> kLine = {-5.0, -3.0, -2.0, -1.0, -0.8, -0.6, -0.4, -0.
                                    0.1,  0.2,  0.3,  0.4,  0.6,  0.8,  1.0,  2.0,  3.0,  5.0};
 
 /// subsurf.inp: one element [−0.4999, 0.5001] × [−0.4998, 0.5002], two ISUBS=9 blocks.
-void subsurf_case(double px, Problem& p, Solution& s) {
-  p.digits.s = 3;
-  p.materials.poiss1 = p.materials.poiss2 = 0.28;
-  p.materials.gg1 = p.materials.gg2 = 1.0;
-  SubsurfaceBlock b1;
+void subsurf_case(double px, model::PatchProblem& p, Solution& s) {
+  p.bodies.body1 = p.bodies.body2 = {0.28, 1.0};
+  model::SubsurfaceBlock b1;
   b1.isubs = 9;
   b1.x = {1e-5};
   b1.y = {1e-5};
   b1.z = kDepths;
-  SubsurfaceBlock b2;
+  model::SubsurfaceBlock b2;
   b2.isubs = 9;
   b2.x = kLine;
   b2.y = kLine;
   b2.z = kDepths;
-  p.subsurface.blocks = {b1, b2};
+  p.subsurface = {b1, b2};
   s.grid = Grid{1, 1, -0.4999, -0.4998, 1.0, 1.0};
   s.pn = {1.0};
   s.px = {px};
@@ -46,10 +45,10 @@ void subsurf_case(double px, Problem& p, Solution& s) {
 }
 
 TEST(Subsurface, UnitPressureMaximaMatchSubsurfCase1) {
-  Problem p;
+  model::PatchProblem p;
   Solution s;
   subsurf_case(0.0, p, s);
-  const std::vector<SubsurfaceResult> r = compute_subsurface(p, s);
+  const std::vector<SubsurfaceResult> r = compute_subsurface(p.subsurface, p.bodies, s);
   ASSERT_EQ(r.size(), 2u);
   const SubsurfaceResult& b1 = r[0];
   EXPECT_NEAR(b1.max_sigvm.value, 0.665, 5e-4);
@@ -85,12 +84,12 @@ TEST(Subsurface, ReproducesSubsurfRefSubsTable) {
   const std::vector<RefBlock> ref =
       read_subs(std::string(ROLLCONTACT_EXAMPLES_DIR) + "/subsurf.ref_subs");
   ASSERT_EQ(ref.size(), 2u);
-  Problem p;
+  model::PatchProblem p;
   Solution s;
   // Case 2: FX/(μ FN) = 0.999 on one element; the converged traction as printed (σ_xz at the
   // loaded surface point of the table).
   subsurf_case(-ref[0].rows[0][10], p, s);
-  const std::vector<SubsurfaceResult> r = compute_subsurface(p, s);
+  const std::vector<SubsurfaceResult> r = compute_subsurface(p.subsurface, p.bodies, s);
   ASSERT_EQ(r.size(), 2u);
   double worst = 0.0;
   for (std::size_t b = 0; b < 2; ++b) {
@@ -117,20 +116,20 @@ TEST(Subsurface, ReproducesSubsurfRefSubsTable) {
 
 TEST(Subsurface, PointSelections) {
   const Grid grid{4, 3, -2.0, -1.5, 1.0, 1.0};
-  SubsurfaceBlock all;
+  model::SubsurfaceBlock all;
   all.isubs = 1;
   all.z = {0.5};
   PointLists p = block_points(all, grid);
   EXPECT_EQ(p.x, (std::vector<double>{-1.5, -0.5, 0.5, 1.5}));
   EXPECT_EQ(p.y, (std::vector<double>{-1.0, 0.0, 1.0}));
-  SubsurfaceBlock range;
+  model::SubsurfaceBlock range;
   range.isubs = 2;
   range.ixl = 2, range.ixinc = 2, range.ixh = 9;
   range.iyl = 3, range.iyinc = 1, range.iyh = 3;
   p = block_points(range, grid);
   EXPECT_EQ(p.x, (std::vector<double>{-0.5, 1.5}));
   EXPECT_EQ(p.y, (std::vector<double>{1.0}));
-  SubsurfaceBlock list;
+  model::SubsurfaceBlock list;
   list.isubs = 7;
   list.ix = {1, 4, 7};
   list.iy = {2};
@@ -140,18 +139,18 @@ TEST(Subsurface, PointSelections) {
 }
 
 TEST(Subsurface, BodyTwoIsTheMirrorImageForIdenticalMaterials) {
-  SubsurfaceBlock b;
+  model::SubsurfaceBlock b;
   b.isubs = 9;
   b.x = {0.3};
   b.y = {-0.2};
   b.z = {-0.6, 0.6};  // point 0 in body 2, point 1 in body 1
   for (const bool normal : {true, false}) {
-    Problem p;
+    model::PatchProblem p;
     Solution s;
     subsurf_case(normal ? 0.0 : 0.8, p, s);
     if (!normal) s.pn = {0.0};
-    p.subsurface.blocks = {b};
-    const SubsurfaceResult r = compute_subsurface(p, s).front();
+    p.subsurface = {b};
+    const SubsurfaceResult r = compute_subsurface(p.subsurface, p.bodies, s).front();
     // Pressure: both bodies are compressed alike (u_z and shear stresses mirror). Traction:
     // body 2 carries the opposite traction, so in-plane quantities change sign.
     const double m = normal ? 1.0 : -1.0;

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "hertz_problem.hpp"
 #include "rollcontact/solve.hpp"
+#include "support/hertz_problem.hpp"
 
 namespace rollcontact {
 namespace {
@@ -15,15 +15,15 @@ namespace {
 // δ = 3μFN(2−ν)/(8 G a) · [1 − (1 − f)^{2/3}] (identical bodies, Johnson, Contact Mechanics §7.2).
 TEST(AnalyticTangential, CattaneoShiftOfASphere) {
   const double a = 1.0, g = 200.0, nu = 0.42, mu = 0.4, fn = 9.1954, f = 0.875;
-  Problem p = test::hertz_problem(a, a, fn, g, nu, 31, 31, 1.1);
-  p.digits.t = 1;
-  p.digits.f = 2;
-  p.kinematics.fx_rel = -f;
-  p.kinematics.fy_rel = 0.0;
-  p.friction.fstat = p.friction.fkin = mu;
-  p.solver.eps = 1e-6;
-  State state;
-  const Solution s = solve(p, state);
+  model::PatchProblem p = test::hertz_problem(a, a, fn, g, nu, 31, 31, 1.1);
+  p.tangential.kind = test::tangential_kind(1);
+  p.tangential.prescribed = model::TangentialPrescribed::Forces;
+  p.tangential.force_x_over_mu_fn = -f;
+  p.tangential.force_y_over_mu_fn = 0.0;
+  p.friction = {mu, mu};
+  p.solver.tolerance = 1e-6;
+  PatchSolver state;
+  const Solution s = state.solve(p);
   ASSERT_TRUE(s.solver.converged) << s.solver.message;
   const double analytic =
       3.0 * mu * fn * (2.0 - nu) / (8.0 * g * a) * (1.0 - std::cbrt(std::pow(1.0 - f, 2.0)));
@@ -44,30 +44,26 @@ double carter_force_ratio(double dx) {
   const double estar = g / (1.0 - nu);
   const double a = 1.0, width = 200.0;
   const double fn = std::acos(-1.0) * a * a * estar / (4.0 * r) * width;  // a² = 4 R F′/(π E*)
-  Problem p;
-  p.digits.p = 2;
-  p.digits.t = 3;
-  p.digits.n = 1;
-  p.digits.o = 1;
-  p.solver.eps = 1e-7;
-  p.solver.maxgs = 999;
-  p.kinematics.fn = fn;
-  p.kinematics.cksi = xi;
-  p.kinematics.chi = 0.0;
-  p.kinematics.dq = dx;
-  p.kinematics.veloc = 30000.0;
-  p.friction.fstat = p.friction.fkin = mu;
-  p.materials.poiss1 = p.materials.poiss2 = nu;
-  p.materials.gg1 = p.materials.gg2 = g;
+  model::PatchProblem p;
+  p.tangential.kind = test::tangential_kind(3);
+  p.solver.tolerance = 1e-7;
+  p.solver.max_inner_iterations = 999;
+  p.normal.force_N = fn;
+  p.tangential.creepage.longitudinal = xi;
+  p.rolling.direction_rad = 0.0;
+  p.rolling.step_mm = dx;
+  p.rolling.velocity_mm_per_s = 30000.0;
+  p.friction = {mu, mu};
+  p.bodies.body1 = p.bodies.body2 = {nu, g};
   const int mx = static_cast<int>(std::lround(2.2 * a / dx));
   p.potential.ipotcn = 1;
   p.potential.mx = mx;
   p.potential.my = 1;
   p.potential.values = {-0.5 * mx * dx, -0.5 * width, dx, width};
-  p.geometry.ibase = 1;
-  p.geometry.coeffs = {1.0 / (2.0 * r), 0.0, 0.0, 0.0, 0.0, 0.0};
-  State state;
-  const Solution s = solve(p, state);
+  p.gap.ibase = 1;
+  p.gap.coeffs = {1.0 / (2.0 * r), 0.0, 0.0, 0.0, 0.0, 0.0};
+  PatchSolver state;
+  const Solution s = state.solve(p);
   EXPECT_TRUE(s.solver.converged) << s.solver.message;
   return s.totals.fx / (mu * s.totals.fn);
 }

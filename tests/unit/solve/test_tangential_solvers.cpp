@@ -8,26 +8,26 @@
 #include <cmath>
 #include <string>
 
-#include "hertz_problem.hpp"
 #include "rollcontact/solve.hpp"
+#include "support/hertz_problem.hpp"
 
 namespace rollcontact {
 namespace {
 
-Problem spinning_case(int t) {
-  Problem p = test::hertz_problem(0.6, 1.0, 10.0, 82000.0, 0.28, 31, 41, 1.1);
-  p.digits.t = t;
-  p.solver.eps = 1e-7;
-  p.kinematics.veloc = 10000.0;
-  p.kinematics.chi = 0.0;
-  p.kinematics.dq = 0.6 * 2.2 / 31;
+model::PatchProblem spinning_case(int t) {
+  model::PatchProblem p = test::hertz_problem(0.6, 1.0, 10.0, 82000.0, 0.28, 31, 41, 1.1);
+  p.tangential.kind = test::tangential_kind(t);
+  p.solver.tolerance = 1e-7;
+  p.rolling.velocity_mm_per_s = 10000.0;
+  p.rolling.direction_rad = 0.0;
+  p.rolling.step_mm = 0.6 * 2.2 / 31;
   if (t == 1) {
-    p.kinematics.cksi = 1.0e-5;  // shift [mm] and rotation [rad]: μp₀a/G ≈ 2e-5 mm
-    p.kinematics.cphi = 1.0e-5;
+    p.tangential.creepage.longitudinal = 1.0e-5;  // shift [mm] and rotation [rad]: μp₀a/G ≈ 2e-5 mm
+    p.tangential.creepage.spin_rad_per_mm = 1.0e-5;
   } else {
-    p.kinematics.cksi = 2.0e-5;  // creepages and spin [rad/mm]: μp₀/G ≈ 3e-5
-    p.kinematics.ceta = -1.0e-5;
-    p.kinematics.cphi = 2.0e-5;
+    p.tangential.creepage.longitudinal = 2.0e-5;  // creepages and spin [rad/mm]: μp₀/G ≈ 3e-5
+    p.tangential.creepage.lateral = -1.0e-5;
+    p.tangential.creepage.spin_rad_per_mm = 2.0e-5;
   }
   return p;
 }
@@ -52,12 +52,12 @@ void expect_coulomb(const Solution& s, double mu) {
 class DefaultSolverMatchesGaussSeidel : public ::testing::TestWithParam<int> {};
 
 TEST_P(DefaultSolverMatchesGaussSeidel, Tractions) {
-  const Problem p = spinning_case(GetParam());
-  Problem gs = p;
-  gs.digits.g = 2;
-  State s1, s2;
-  const Solution newton = solve(p, s1);
-  const Solution reference = solve(gs, s2);
+  const model::PatchProblem p = spinning_case(GetParam());
+  model::PatchProblem gs = p;
+  gs.solver.tangential_method = model::TangentialMethod::ConvexGS;
+  PatchSolver s1, s2;
+  const Solution newton = s1.solve(p);
+  const Solution reference = s2.solve(gs);
   ASSERT_TRUE(newton.solver.converged) << newton.solver.message;
   ASSERT_TRUE(reference.solver.converged) << reference.solver.message;
   for (const std::string& w : newton.warnings)  // Newton itself converged, without fall-back
@@ -93,17 +93,17 @@ namespace {
 // must not depend on the start. A cold solve (coarse start) against the same case warm-started
 // from a neighbouring creepage (P=0 continuation: no coarse start).
 TEST(SteadyRollingCoarseStart, GivesTheSameSolutionAsAWarmStart) {
-  Problem p = test::hertz_problem(2.0, 3.0, 5000.0, 82000.0, 0.28, 61, 81, 1.05);
-  p.digits.t = 3;
-  p.solver.eps = 1e-7;
-  p.kinematics.veloc = 10000.0;
-  p.kinematics.chi = 0.0;
-  p.kinematics.dq = 2.0 * 2.1 / 61;
-  p.kinematics.cksi = 0.0005;
-  p.kinematics.ceta = -0.0002;
-  p.kinematics.cphi = 0.0002;
-  State cold_state;
-  const Solution cold = solve(p, cold_state);
+  model::PatchProblem p = test::hertz_problem(2.0, 3.0, 5000.0, 82000.0, 0.28, 61, 81, 1.05);
+  p.tangential.kind = test::tangential_kind(3);
+  p.solver.tolerance = 1e-7;
+  p.rolling.velocity_mm_per_s = 10000.0;
+  p.rolling.direction_rad = 0.0;
+  p.rolling.step_mm = 2.0 * 2.1 / 61;
+  p.tangential.creepage.longitudinal = 0.0005;
+  p.tangential.creepage.lateral = -0.0002;
+  p.tangential.creepage.spin_rad_per_mm = 0.0002;
+  PatchSolver cold_state;
+  const Solution cold = cold_state.solve(p);
   ASSERT_TRUE(cold.solver.converged) << cold.solver.message;
   EXPECT_GT(cold.statistics.ncon, 2000);
   EXPECT_GT(cold.solver.tangential_coarse_iterations, 0);      // the coarse start was used
@@ -111,13 +111,13 @@ TEST(SteadyRollingCoarseStart, GivesTheSameSolutionAsAWarmStart) {
   EXPECT_LT(cold.statistics.nslip, cold.statistics.ncon * 4 / 5);
   expect_coulomb(cold, 0.3);
 
-  Problem neighbour = p;
-  neighbour.kinematics.cksi = 0.0004;
-  State warm_state;
-  ASSERT_TRUE(solve(neighbour, warm_state).solver.converged);
-  Problem continued = p;
-  continued.digits.p = 0;
-  const Solution warm = solve(continued, warm_state);
+  model::PatchProblem neighbour = p;
+  neighbour.tangential.creepage.longitudinal = 0.0004;
+  PatchSolver warm_state;
+  ASSERT_TRUE(warm_state.solve(neighbour).solver.converged);
+  model::PatchProblem continued = p;
+  continued.sequence.continue_previous = true;
+  const Solution warm = warm_state.solve(continued);
   ASSERT_TRUE(warm.solver.converged) << warm.solver.message;
   EXPECT_EQ(warm.solver.tangential_coarse_iterations, 0);
 

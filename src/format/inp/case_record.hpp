@@ -1,13 +1,21 @@
 #pragma once
-// Problem: the plain-data description of one contact case (module 3, "basic contact").
-// Produced by input readers (.inp, TOML) or filled in by API users; consumed by solve().
-// Units as in CONTACT: mm, N, N/mm², s, rad. No file names or I/O inside.
+// CaseRecord: one module-3 case as CONTACT's input describes it — control digits, the values
+// of each block, where it came from. The .inp and TOML readers produce it, the writers echo
+// it, and to_patch_problem() (format/inp/to_model.hpp) turns it into the solver's
+// model::PatchProblem. This is the only place the control digits live.
+// Units as in CONTACT: mm, N, N/mm², s, rad.
 
 #include <array>
 #include <string>
 #include <vector>
 
-namespace rollcontact {
+#include "rollcontact/model/geometry.hpp"
+
+namespace rollcontact::format {
+
+using model::PotentialContact;
+using model::SubsurfaceBlock;
+using model::UndeformedDistance;
 
 /// Debug print levels of control word 4 (read when X=1). They have no effect on results.
 struct DebugDigits {
@@ -141,31 +149,6 @@ struct Materials {
   } conformal;
 };
 
-/// Potential contact area (IPOTCN block). The four reals after MX MY keep their input meaning:
-///  ipotcn  1: XL YL DX DY       2: XL YL XH YH       3: XC1 YC1 DX DY     4: XC1 YC1 XCM YCM
-///  ipotcn -1: A1 B1 SCALE       -2: A1 AOB SCALE     -3: AA BB SCALE      -4: A1 BB SCALE
-///  ipotcn -5: AA BB SCALE       -6: AA BNEG BPOS SCALE
-/// (curvatures A1, B1 in 1/mm, semi-axes in mm; SCALE = potential area / Hertz area).
-struct PotentialContact {
-  int ipotcn = 1;
-  int mx = 1, my = 1;
-  std::array<double, 4> values{};
-  bool hertzian() const noexcept { return ipotcn < 0; }
-};
-
-/// Undeformed distance (IBASE/IPLAN block, spec/physics.md §4); used when ipotcn > 0.
-struct UndeformedDistance {
-  int ibase = 1;               ///< 1 quadratic, 2 tabulated profile, 3 sines, 9 per element
-  int iplan = 1;               ///< 1 unrestricted, 2 quadratic planform, 3 two rectangles
-  std::vector<double> coeffs;  ///< IBASE 1: B1..B6; 3: B1..B8; 2: profile samples B(1..NN)
-  double xm = 0.0, rm = 0.0, y1 = 0.0, dy1 = 0.0;  ///< IBASE 2 [mm]
-  std::vector<double> values;                      ///< IBASE 9: h per element [mm], ix fastest
-  std::vector<double> planform;       ///< IPLAN 2: PL1..6; IPLAN 3: XL1 XH1 YL1 YH1 XL2 XH2 YL2 YH2
-                                      ///< IPLAN 4: XL XH YL YH per patch (4*npatch values)
-  int npatch = 0;                     ///< IPLAN 4 (experimental): number of patches
-  std::vector<double> patch_factors;  ///< IPLAN 4: f12 f13 ... f23 ... (npatch*(npatch-1)/2)
-};
-
 /// Damping (M2=2 line). Active when `enabled` (M2=2, or M2=1 keeping an active setting).
 struct Damping {
   bool enabled = false;
@@ -179,17 +162,6 @@ struct HeatParameters {
                                                                     ///< W/(mm °C), kg/mm³
   double bktemp2 = 0.0, heatcp2 = 0.0, lambda2 = 0.0, dens2 = 0.0;  ///< body 2, same units
   double betapl = 0.0;  ///< M=4: fraction of plastic work turned into heat [0..1]
-};
-
-/// One block of subsurface points (spec/inp-format.md §6).
-struct SubsurfaceBlock {
-  int isubs = 1;  ///< 1/5 all elements, 2/6 regular column/row selection, 3/7 lists, 9 points
-  int ixl = 1, ixinc = 1, ixh = 1;  ///< ISUBS 2,6: 1-based column range and step
-  int iyl = 1, iyinc = 1, iyh = 1;  ///< ISUBS 2,6: 1-based row range and step
-  std::vector<int> ix, iy;          ///< ISUBS 3,7: 1-based columns / rows (sorted, unique)
-  double zl = 0.0, dz = 0.0;        ///< ISUBS 1,2,3: z_k = zl + (k-1) dz [mm]
-  std::vector<double> x, y;         ///< ISUBS 9: coordinates [mm], sorted ascending
-  std::vector<double> z;            ///< all ISUBS: depths [mm] (z >= 0 in body 1), ascending
 };
 
 /// Subsurface stress request (S>=2 input); evaluated when digits.s >= 1.
@@ -213,7 +185,7 @@ struct SourceInfo {
 };
 
 /// One module-3 contact case.
-struct Problem {
+struct CaseRecord {
   int case_number = 1;      ///< 1-based, per result element
   int result_element = 0;   ///< REID
   int contact_problem = 1;  ///< CPID
@@ -230,4 +202,4 @@ struct Problem {
   SourceInfo source;
 };
 
-}  // namespace rollcontact
+}  // namespace rollcontact::format

@@ -1,5 +1,5 @@
 #pragma once
-// WheelRailProblem: the plain-data description of one module-1 (wheel/rail) case of a CONTACT
+// WheelRailRecord: the plain-data description of one module-1 (wheel/rail) case of a CONTACT
 // .inp file (spec/inp-format.md §5), fully resolved: "keep" digits carry the values of the
 // previous case of the same result element. Units as in CONTACT: mm, N, N/mm², s, rad; velocities
 // in mm/s, angular velocities in rad/s. Only the solver for it does not exist yet.
@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "rollcontact/problem.hpp"
-#include "rollcontact/profile.hpp"
+#include "format/inp/case_record.hpp"
+#include "rollcontact/model/profile.hpp"
 
-namespace rollcontact {
+namespace rollcontact::format {
 
 /// V=1,2 friction variation (spec/inp-format.md §5, line 7'): one set of law values per control
-/// point. The scalar members of WheelRailProblem::friction hold the first set.
+/// point. The scalar members of WheelRailRecord::friction hold the first set.
 struct VariableFriction {
   int v = 0;  ///< 0 one set, 1 vs. rail surface inclination, 2 vs. track position
   /// Control points, strictly increasing: ALPHA [rad] (V=1) or SVF [mm] (V=2).
@@ -116,7 +116,7 @@ struct WheelDeviations {
 };
 
 /// One module-1 wheel/rail case.
-struct WheelRailProblem {
+struct WheelRailRecord {
   int case_number = 1;     ///< 1-based, per result element (shared with module 3)
   int result_element = 0;  ///< REID
   /// Control digits (spec/inp-format.md §3); `digits.c` is the influence-coefficient digit C3,
@@ -148,4 +148,4 @@ struct WheelRailProblem {
   bool is_left() const noexcept { return config == 0 || config == 4; }
 };
 
-}  // namespace rollcontact
+}  // namespace rollcontact::format

@@ -1,0 +1,39 @@
+#pragma once
+// The two bodies in contact: elastic constants and the tangential compliance model.
+// Units: N/mm² (MPa) for moduli, mm³/N for flexibilities.
+
+#include <array>
+
+namespace rollcontact::model {
+
+/// Linear elastic, homogeneous, isotropic half-space.
+struct ElasticBody {
+  double poisson_ratio = 0.28;           ///< ν [-], in [0, 0.5]
+  double shear_modulus_N_mm2 = 82000.0;  ///< G [N/mm²], > 0
+};
+
+/// How the tangential problem models the bodies' compliance (spec/physics.md §5, §11).
+enum class TangentialCompliance {
+  ExactHalfSpace,             ///< Kalker's exact half-space theory on the grid
+  FastsimOneFlexibility,      ///< Modified Fastsim with one given flexibility (CONTACT M=2)
+  FastsimThreeFlexibilities,  ///< Modified Fastsim with three flexibilities from Kalker's
+                              ///< coefficients (CONTACT M=3)
+  FaStrip,                    ///< Modified FaStrip (CONTACT M=5)
+};
+
+/// Parameters of the simplified (Fastsim family) theories; unused for the exact theory.
+struct SimplifiedParameters {
+  double flexibility_mm3_N = 0.0;  ///< the one flexibility L [mm³/N] (FastsimOneFlexibility)
+  /// Slope reduction of Modified Fastsim: initial slope factor k0 [-], its decay alpha_inf [-]
+  /// and beta [-] (spec/physics.md §11.2: K0_MF, ALFAMF, BETAMF).
+  double k0 = 1.0, alpha_inf = 1.0, beta = 0.0;
+};
+
+struct Bodies {
+  ElasticBody body1;  ///< the upper body; tractions act on it
+  ElasticBody body2;
+  TangentialCompliance compliance = TangentialCompliance::ExactHalfSpace;
+  SimplifiedParameters simplified;
+};
+
+}  // namespace rollcontact::model

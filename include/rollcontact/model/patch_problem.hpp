@@ -1,0 +1,43 @@
+#pragma once
+// PatchProblem: everything that defines one contact patch for the solvers — physics only.
+// Front ends (.inp, TOML, the C++ API, later the wheel/rail contact search) build it; the
+// PatchSolver solves it. Units: mm, N, N/mm², s, rad. No file names, no input-format codes of
+// the control words; see docs/architecture.md.
+
+#include <vector>
+
+#include "rollcontact/model/bodies.hpp"
+#include "rollcontact/model/friction.hpp"
+#include "rollcontact/model/geometry.hpp"
+#include "rollcontact/model/loading.hpp"
+#include "rollcontact/model/solver_options.hpp"
+
+namespace rollcontact::model {
+
+/// How a problem relates to the previous one solved by the same PatchSolver (a sequence).
+struct SequenceLink {
+  /// Start from the previous solution: its tractions are the previous time of transient rolling
+  /// and the warm start of the iterations. false: a new sequence (no memory).
+  bool continue_previous = false;
+  /// This problem's solution replaces the remembered previous one (false: it is solved but the
+  /// sequence keeps the older state).
+  bool becomes_previous = true;
+  /// With prescribed forces: start the creepage iteration from the previous case's creepages
+  /// (true) or afresh (false).
+  bool force_iteration_from_previous = false;
+};
+
+struct PatchProblem {
+  PotentialContact potential;  ///< the grid, or a Hertzian area
+  UndeformedDistance gap;      ///< h(x, y) on a rectangular potential contact
+  Bodies bodies;
+  Friction friction;
+  NormalLoading normal;
+  TangentialLoading tangential;
+  Rolling rolling;
+  SolverOptions solver;
+  SequenceLink sequence;
+  std::vector<SubsurfaceBlock> subsurface;  ///< stresses wanted at these points (empty: none)
+};
+
+}  // namespace rollcontact::model

@@ -1,0 +1,23 @@
+#pragma once
+// How (not what) a patch is solved: tolerances, iteration limits and the solver choice.
+
+namespace rollcontact::model {
+
+/// Which iteration solves the tangential problem of the exact theory.
+enum class TangentialMethod {
+  Default,   ///< semismooth Newton with Krylov inner solves (docs/decisions.md); for steady
+             ///< rolling in the role of CONTACT's SteadyGS
+  ConvexGS,  ///< Gauss–Seidel with the exact element solution ("ConvexGS")
+};
+
+struct SolverOptions {
+  double tolerance = 1e-5;               ///< relative tolerance of every iteration [-]
+  int max_inner_iterations = 999;        ///< CG / Gauss–Seidel / Krylov products
+  int max_newton_iterations = 30;        ///< force iteration (prescribed tangential forces)
+  int max_normal_tangential_passes = 1;  ///< Panagiotopoulos passes (1: Johnson's process)
+  TangentialMethod tangential_method = TangentialMethod::Default;
+  /// Gauss–Seidel relaxation in adhesion and slip (ConvexGS); 0: the solver's default.
+  double relaxation_adhesion = 0.0, relaxation_slip = 0.0;
+};
+
+}  // namespace rollcontact::model

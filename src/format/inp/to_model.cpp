@@ -1,0 +1,128 @@
+// CaseRecord → model::PatchProblem (spec/inp-format.md §3 for the digits).
+
+#include "format/inp/to_model.hpp"
+
+#include <fmt/format.h>
+
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::format {
+
+namespace {
+
+[[noreturn]] void not_supported(const std::string& what) {
+  throw NotSupportedError("not supported yet: " + what);
+}
+
+model::Bodies bodies_of(const CaseRecord& r) {
+  const Materials& m = r.materials;
+  model::Bodies b;
+  b.body1 = {m.poiss1, m.gg1};
+  b.body2 = {m.poiss2, m.gg2};
+  const auto& mp = m.model_params;
+  switch (r.digits.m) {
+    case 2:  // FLX K0_MF ALFAMF BETAMF
+      b.compliance = model::TangentialCompliance::FastsimOneFlexibility;
+      b.simplified = {mp[0], mp[1], mp[2], mp[3]};
+      break;
+    case 3:  // K0_MF ALFAMF BETAMF
+    case 5:
+      b.compliance = r.digits.m == 3 ? model::TangentialCompliance::FastsimThreeFlexibilities
+                                     : model::TangentialCompliance::FaStrip;
+      b.simplified = {0.0, mp[0], mp[1], mp[2]};
+      break;
+    default:
+      b.compliance = model::TangentialCompliance::ExactHalfSpace;
+  }
+  return b;
+}
+
+model::NormalLoading normal_of(const CaseRecord& r) {
+  model::NormalLoading n;
+  n.kind = r.digits.n == 1 ? model::NormalLoadKind::Force : model::NormalLoadKind::Approach;
+  n.approach_mm = r.kinematics.pen;
+  n.force_N = r.kinematics.fn;
+  n.pressure = r.digits.b == 2   ? model::PressureModel::EllipticHertzian
+               : r.digits.b == 3 ? model::PressureModel::ParabolicHertzian
+                                 : model::PressureModel::ExactHalfSpace;
+  return n;
+}
+
+model::TangentialLoading tangential_of(const CaseRecord& r) {
+  const Kinematics& k = r.kinematics;
+  model::TangentialLoading t;
+  constexpr model::TangentialKind kinds[] = {
+      model::TangentialKind::None, model::TangentialKind::Shift,
+      model::TangentialKind::TransientRolling, model::TangentialKind::SteadyRolling};
+  t.kind = kinds[r.digits.t];
+  t.prescribed = r.digits.f == 1   ? model::TangentialPrescribed::LongitudinalForceLateralCreepage
+                 : r.digits.f == 2 ? model::TangentialPrescribed::Forces
+                                   : model::TangentialPrescribed::Creepages;
+  t.creepage = {k.cksi, k.ceta, k.cphi};
+  t.force_x_over_mu_fn = k.fx_rel;
+  t.force_y_over_mu_fn = k.fy_rel;
+  t.spin_centre_x_mm = k.spinxo;
+  t.spin_centre_y_mm = k.spinyo;
+  // Only the E=9 digit itself applies the per-element values (E=1 "keep" does not).
+  if (r.digits.e == 9) t.extra_slip = k.extra_slip;
+  return t;
+}
+
+model::SolverOptions solver_of(const CaseRecord& r) {
+  const SolverSettings& s = r.solver;
+  model::SolverOptions o;
+  o.tolerance = s.eps;
+  o.max_inner_iterations = s.maxgs;
+  o.max_newton_iterations = s.maxnr;
+  o.max_normal_tangential_passes = s.maxout;
+  o.tangential_method =
+      r.digits.g == 2 ? model::TangentialMethod::ConvexGS : model::TangentialMethod::Default;
+  if (r.digits.g == 2 || r.digits.g == 3) {
+    o.relaxation_adhesion = s.omega_h;
+    o.relaxation_slip = s.omega_s;
+  }
+  return o;
+}
+
+}  // namespace
+
+void check_supported(const CaseRecord& record) {
+  const ControlDigits& d = record.digits;
+  if (d.b != 0 && d.b != 2 && d.b != 3) not_supported(fmt::format("normal method B={}", d.b));
+  if (d.m != 0 && d.m != 2 && d.m != 3 && d.m != 5)
+    not_supported(fmt::format("material model M={}", d.m));
+  if ((d.m == 2 || d.m == 3 || d.m == 5) && d.t == 1)
+    not_supported(fmt::format("the simplified theory M={} with shifts T=1", d.m));
+  if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
+  if (d.c == 3 || d.c == 4 || d.c == 9)
+    not_supported(fmt::format("influence coefficients C={}", d.c));
+  if (d.h != 0) not_supported(fmt::format("temperature H={}", d.h));
+  if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
+  if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
+  if (d.t >= 1 && record.friction.law != 0)
+    not_supported(fmt::format("friction law L={}", record.friction.law));
+  if (d.g == 5) not_supported("solver GDsteady G=5");
+  if (record.potential.ipotcn == -6) not_supported("SDEC potential contact IPOTCN=-6");
+}
+
+model::PatchProblem to_patch_problem(const CaseRecord& record) {
+  check_supported(record);
+  const ControlDigits& d = record.digits;
+  model::PatchProblem p;
+  p.potential = record.potential;
+  p.gap = record.geometry;
+  p.bodies = bodies_of(record);
+  p.friction = {record.friction.fstat, record.friction.fkin};
+  p.normal = normal_of(record);
+  p.tangential = tangential_of(record);
+  p.rolling = {record.kinematics.chi, record.kinematics.dq, record.kinematics.veloc,
+               record.kinematics.facphi};
+  p.solver = solver_of(record);
+  p.sequence.continue_previous = d.p != 2;
+  p.sequence.becomes_previous = d.p != 3;
+  p.sequence.force_iteration_from_previous = !(d.i == 0 || d.i == 2);
+  if (d.s >= 1) p.subsurface = record.subsurface.blocks;
+  return p;
+}
+
+}  // namespace rollcontact::format
