@@ -11,6 +11,7 @@
 #include "format/inp/inp_reader.hpp"
 #include "format/toml/toml_case_reader.hpp"
 #include "format/toml/toml_case_writer.hpp"
+#include "rollcontact/errors.hpp"
 #include "rollcontact/solve.hpp"
 #include "support/problem_compare.hpp"
 
@@ -67,6 +68,30 @@ TEST(TomlAcceptance, ExamplePairsDescribeTheSameProblems) {
     ++pairs;
   }
   EXPECT_GE(pairs, 6);
+}
+
+TEST(SolveCase, GeometryErrorsNameFileLineAndCase) {
+  format::CaseRecord r;
+  r.case_number = 7;
+  r.source.file = "demo.inp";
+  r.source.first_line = 42;
+  r.digits.n = 1;
+  r.kinematics.fn = 1.0;
+  r.potential = {1, 3, 3, {0.0, 0.0, 1.0, 1.0}};
+  r.geometry.ibase = 1;
+  r.geometry.coeffs = {1.0, 0.0, 1.0, 0.0, 0.0, 0.0};
+  r.geometry.iplan = 2;
+  r.geometry.planform = {0, 0, 0, 0, 0, 1.0};  // form ≥ 0 everywhere: no element left
+  PatchSolver solver;
+  try {
+    (void)solve_case(r, solver);
+    FAIL() << "expected GeometryError";
+  } catch (const GeometryError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("demo.inp:42: case 7: ", 0), 0u) << what;
+    EXPECT_NE(what.find("excludes every element"), std::string::npos) << what;
+    EXPECT_EQ(e.code(), ErrorCode::Discretisation);
+  }
 }
 
 }  // namespace

@@ -1,0 +1,146 @@
+// The adapter from CONTACT's case record to the solver's model: each control digit becomes a
+// named choice, and what the solvers do not implement is refused with the digit named.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "format/inp/inp_reader.hpp"
+#include "format/inp/to_model.hpp"
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::format {
+namespace {
+
+const std::filesystem::path kRepoExamples =
+    std::filesystem::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
+
+CaseRecord basic_record() {
+  CaseRecord r;
+  r.digits.p = 2;
+  r.digits.n = 1;
+  r.kinematics.fn = 100.0;
+  r.materials.poiss1 = 0.3;
+  r.materials.poiss2 = 0.25;
+  r.materials.gg1 = 80000.0;
+  r.materials.gg2 = 70000.0;
+  return r;
+}
+
+TEST(ToModel, ShiftExampleWithPrescribedForces) {
+  // examples/shift.inp: P-B-T-N-F-S = 2 0 1 1 2 0, FN 9.1954, FX/(mu FN) -0.875, mu 0.4.
+  const auto records = read_inp_file(kRepoExamples / "shift.inp");
+  ASSERT_EQ(records.size(), 1u);
+  const model::PatchProblem p = to_patch_problem(records[0]);
+  EXPECT_EQ(p.tangential.kind, model::TangentialKind::Shift);
+  EXPECT_EQ(p.tangential.prescribed, model::TangentialPrescribed::Forces);
+  EXPECT_EQ(p.normal.kind, model::NormalLoadKind::Force);
+  EXPECT_EQ(p.normal.pressure, model::PressureModel::ExactHalfSpace);
+  EXPECT_DOUBLE_EQ(p.normal.force_N, 9.1954);
+  EXPECT_DOUBLE_EQ(p.tangential.force_x_over_mu_fn, -0.875);
+  EXPECT_DOUBLE_EQ(p.friction.static_coefficient, 0.4);
+  EXPECT_DOUBLE_EQ(p.bodies.body1.shear_modulus_N_mm2, 200.0);
+  EXPECT_DOUBLE_EQ(p.bodies.body2.poisson_ratio, 0.42);
+  EXPECT_DOUBLE_EQ(p.solver.tolerance, 1e-4);
+  EXPECT_EQ(p.solver.max_inner_iterations, 100);
+  EXPECT_EQ(p.potential.mx, 19);
+  EXPECT_FALSE(p.sequence.continue_previous);
+  EXPECT_TRUE(p.sequence.becomes_previous);
+}
+
+TEST(ToModel, DigitsBecomeNamedChoices) {
+  CaseRecord r = basic_record();
+  r.digits.t = 3;
+  r.digits.b = 2;
+  r.digits.m = 3;
+  r.digits.f = 1;
+  r.digits.g = 2;
+  r.digits.p = 3;
+  r.digits.i = 1;
+  r.solver.omega_h = 0.7;
+  r.materials.model_params = {0.9, 0.5, 0.2, 0.0};
+  const model::PatchProblem p = to_patch_problem(r);
+  EXPECT_EQ(p.tangential.kind, model::TangentialKind::SteadyRolling);
+  EXPECT_EQ(p.normal.pressure, model::PressureModel::EllipticHertzian);
+  EXPECT_EQ(p.bodies.compliance, model::TangentialCompliance::FastsimThreeFlexibilities);
+  EXPECT_DOUBLE_EQ(p.bodies.simplified.k0, 0.9);
+  EXPECT_DOUBLE_EQ(p.bodies.simplified.alpha_inf, 0.5);
+  EXPECT_DOUBLE_EQ(p.bodies.simplified.beta, 0.2);
+  EXPECT_EQ(p.tangential.prescribed, model::TangentialPrescribed::LongitudinalForceLateralCreepage);
+  EXPECT_EQ(p.solver.tangential_method, model::TangentialMethod::ConvexGS);
+  EXPECT_DOUBLE_EQ(p.solver.relaxation_adhesion, 0.7);
+  // P=3: continues but keeps the stored state; I=1: force iteration from the previous case.
+  EXPECT_TRUE(p.sequence.continue_previous);
+  EXPECT_FALSE(p.sequence.becomes_previous);
+  EXPECT_TRUE(p.sequence.force_iteration_from_previous);
+
+  r.digits.m = 2;  // FLX first, then K0_MF ALFAMF BETAMF
+  r.materials.model_params = {1e-4, 0.9, 0.5, 0.2};
+  const model::PatchProblem one = to_patch_problem(r);
+  EXPECT_EQ(one.bodies.compliance, model::TangentialCompliance::FastsimOneFlexibility);
+  EXPECT_DOUBLE_EQ(one.bodies.simplified.flexibility_mm3_N, 1e-4);
+  EXPECT_DOUBLE_EQ(one.bodies.simplified.k0, 0.9);
+}
+
+TEST(ToModel, RelaxationAndExtraSlipOnlyWhereTheirDigitsApply) {
+  CaseRecord r = basic_record();
+  r.digits.t = 2;
+  r.solver.omega_h = 0.7;  // read, but only G=2,3 use it
+  r.kinematics.extra_slip = {1.0, 2.0};
+  r.digits.e = 1;  // "keep" does not apply per-element slip
+  model::PatchProblem p = to_patch_problem(r);
+  EXPECT_EQ(p.solver.relaxation_adhesion, 0.0);
+  EXPECT_TRUE(p.tangential.extra_slip.empty());
+  r.digits.e = 9;
+  p = to_patch_problem(r);
+  EXPECT_EQ(p.tangential.extra_slip.size(), 2u);
+}
+
+TEST(ToModel, SubsurfacePointsOnlyWithTheSDigit) {
+  CaseRecord r = basic_record();
+  r.subsurface.blocks.resize(2);
+  EXPECT_TRUE(to_patch_problem(r).subsurface.empty());
+  r.digits.s = 2;
+  EXPECT_EQ(to_patch_problem(r).subsurface.size(), 2u);
+}
+
+TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
+  const auto message_of = [](const CaseRecord& r) {
+    try {
+      (void)to_patch_problem(r);
+    } catch (const NotSupportedError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  CaseRecord r = basic_record();
+  r.digits.m = 4;
+  EXPECT_EQ(message_of(r), "not supported yet: material model M=4");
+  r = basic_record();
+  r.digits.t = 2;
+  r.friction.law = 4;
+  EXPECT_EQ(message_of(r), "not supported yet: friction law L=4");
+  r = basic_record();
+  r.digits.h = 3;
+  EXPECT_EQ(message_of(r), "not supported yet: temperature H=3");
+  r = basic_record();
+  r.digits.c = 9;
+  EXPECT_EQ(message_of(r), "not supported yet: influence coefficients C=9");
+  r = basic_record();
+  r.potential.ipotcn = -6;
+  EXPECT_EQ(message_of(r), "not supported yet: SDEC potential contact IPOTCN=-6");
+  EXPECT_EQ(message_of(basic_record()), "(accepted)");
+}
+
+TEST(ToModel, EveryRepositoryExampleConverts) {
+  for (const auto& entry : std::filesystem::directory_iterator(kRepoExamples)) {
+    if (entry.path().extension() != ".inp") continue;
+    SCOPED_TRACE(entry.path().filename().string());
+    for (const CaseRecord& r : read_inp_file(entry.path()))
+      EXPECT_NO_THROW((void)to_patch_problem(r));
+  }
+}
+
+}  // namespace
+}  // namespace rollcontact::format
