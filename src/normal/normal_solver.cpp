@@ -118,31 +118,52 @@ void NormalSolver::apply_sparse_correction(const std::vector<int>& changed,
   }
 }
 
-NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, double value,
-                                 const NormalSettings& settings, const std::vector<double>* initial,
-                                 double poisson, double modulus) {
+namespace {
+
+/// The free set F (loaded elements and unloaded ones that penetrate) and the residual r = −gap
+/// on F, zero elsewhere; with prescribed force r has zero mean on F (the force constraint).
+/// Returns |F|; `set_changed` tells whether F differs from `in_contact` before the call.
+std::size_t free_set_residual(const std::vector<double>& h, const std::vector<double>& p,
+                              const std::vector<double>& u, double pen, bool force_given,
+                              std::vector<double>& r, std::vector<char>& in_contact,
+                              bool& set_changed) {
+  const std::size_t n = h.size();
+  std::size_t nfree = 0;
+  double r_mean = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double gap = h[i] + u[i] - pen;
+    const char free = p[i] > 0.0 || (gap < 0.0 && !is_excluded(h[i]));
+    set_changed |= free != in_contact[i];
+    in_contact[i] = free;
+    if (free) {
+      ++nfree;
+      r[i] = -gap;
+      r_mean += r[i];
+    } else {
+      r[i] = 0.0;
+    }
+  }
+  if (force_given && nfree) {
+    r_mean /= static_cast<double>(nfree);
+    for (std::size_t i = 0; i < n; ++i)
+      if (in_contact[i]) r[i] -= r_mean;
+  }
+  return nfree;
+}
+
+}  // namespace
+
+bool NormalSolver::start(const std::vector<double>& h, NormalLoad load, double value,
+                         const std::vector<double>* initial, double poisson, double modulus,
+                         NormalResult& res) {
   const std::size_t n = grid_.size();
-  const double area = grid_.element_area();
   const bool force_given = load == NormalLoad::Force;
-  NormalResult res;
+  const double target_sum = force_given ? value / grid_.element_area() : 0.0;
   res.pn = initial ? *initial : initial_pressure(grid_, h, load, value, poisson, modulus);
   std::vector<double>& p = res.pn;
   for (std::size_t i = 0; i < n; ++i)
     if (is_excluded(h[i]) || p[i] < 0.0) p[i] = 0.0;
-
   res.un.assign(n, 0.0);
-  std::vector<double>& u = res.un;
-  const double target_sum = force_given ? value / area : 0.0;
-
-  auto rescale_to_force = [&]() {
-    double s = 0.0;
-    for (double v : p) s += v;
-    if (s > 0.0) {
-      const double f = target_sum / s;
-      for (double& v : p) v *= f;
-      for (double& v : u) v *= f;
-    }
-  };
 
   bool any = std::any_of(p.begin(), p.end(), [](double v) { return v > 0.0; });
   if (!any) {
@@ -155,7 +176,7 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
     } else if (!force_given && (it == h.end() || *it - value >= 0.0)) {
       res.pen = value;
       res.converged = true;
-      return res;
+      return false;
     }
   }
   if (force_given) {
@@ -163,8 +184,80 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
     for (double v : p) s += v;
     for (double& v : p) v *= target_sum / s;
   }
+  a_.apply(p.data(), res.un.data());
+  ++res.products;
+  return true;
+}
+
+void NormalSolver::finish(const std::vector<double>& h, bool force_given, double value,
+                          const NormalSettings& settings, NormalResult& res) {
+  const std::size_t n = grid_.size();
+  std::vector<double>& p = res.pn;
+  std::vector<double>& u = res.un;
+  // Final consistent displacement, approach, force and contact count.
   a_.apply(p.data(), u.data());
   ++res.products;
+  double fsum = 0.0, gap_sum = 0.0;
+  int ncon = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p[i] > 0.0) {
+      ++ncon;
+      fsum += p[i];
+      gap_sum += h[i] + u[i];
+    }
+  }
+  res.contact_elements = ncon;
+  res.fn = fsum * grid_.element_area();
+  res.pen = force_given ? (ncon ? gap_sum / ncon : 0.0) : value;
+  // Independent check of the contact conditions, so that a wrong answer can never be reported as
+  // converged: gap ≈ 0 where loaded, no penetration elsewhere, finite values. The tolerance is
+  // generous (the CG stop is on the pressure change, not on the gap) but far below any error that
+  // would show in the printed results.
+  if (res.converged) {
+    double scale = 0.0, worst = 0.0;
+    bool finite = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (is_excluded(h[i])) continue;
+      finite = finite && std::isfinite(p[i]) && std::isfinite(u[i]);
+      const double gap = h[i] + u[i] - res.pen;
+      scale = std::max(scale, std::abs(u[i]));
+      worst = std::max(worst, p[i] > 0.0 ? std::abs(gap) : std::max(0.0, -gap));
+    }
+    const double tolerance = std::max(100.0 * settings.eps, 1e-10) * std::max(scale, 1e-300);
+    if (!finite || worst > tolerance) {
+      res.converged = false;
+      res.message = fmt::format(
+          "NormCG stopped after {} iterations but the contact conditions are violated by {:.3e} mm "
+          "(tolerance {:.3e} mm)",
+          res.iterations, worst, tolerance);
+    }
+  }
+  if (!res.converged && res.message.empty())
+    res.message = fmt::format(
+        "NormCG did not converge in {} iterations (relative change {:.3e} > EPS {:.3e})",
+        res.iterations, res.residual, settings.eps);
+}
+
+NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, double value,
+                                 const NormalSettings& settings, const std::vector<double>* initial,
+                                 double poisson, double modulus) {
+  const std::size_t n = grid_.size();
+  const bool force_given = load == NormalLoad::Force;
+  NormalResult res;
+  if (!start(h, load, value, initial, poisson, modulus, res)) return res;
+  std::vector<double>& p = res.pn;
+  std::vector<double>& u = res.un;
+  const double target_sum = force_given ? value / grid_.element_area() : 0.0;
+
+  auto rescale_to_force = [&]() {
+    double s = 0.0;
+    for (double v : p) s += v;
+    if (s > 0.0) {
+      const double f = target_sum / s;
+      for (double& v : p) v *= f;
+      for (double& v : u) v *= f;
+    }
+  };
 
   std::vector<double> r(n, 0.0), z(n, 0.0), d(n, 0.0), q(n, 0.0);
   std::vector<char> in_contact(n, 0);
@@ -202,27 +295,9 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
         }
       if (nload) pen = gap_sum / static_cast<double>(nload);
     }
-    std::size_t nfree = 0;
     bool set_changed = false;
-    double r_mean = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double gap = h[i] + u[i] - pen;
-      const char free = p[i] > 0.0 || (gap < 0.0 && !is_excluded(h[i]));
-      set_changed |= free != in_contact[i];
-      in_contact[i] = free;
-      if (free) {
-        ++nfree;
-        r[i] = -gap;
-        r_mean += r[i];
-      } else {
-        r[i] = 0.0;
-      }
-    }
-    if (force_given && nfree) {
-      r_mean /= static_cast<double>(nfree);
-      for (std::size_t i = 0; i < n; ++i)
-        if (in_contact[i]) r[i] -= r_mean;
-    }
+    const std::size_t nfree =
+        free_set_residual(h, p, u, pen, force_given, r, in_contact, set_changed);
 
     // z = M·r is used on the free set only (masked in the update of d). As r vanishes outside
     // it, r·z summed over the whole grid equals the masked sum term by term (the other terms are
@@ -303,48 +378,7 @@ NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, 
   res.iteration_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
 
-  // Final consistent displacement, approach, force and contact count.
-  a_.apply(p.data(), u.data());
-  ++res.products;
-  double fsum = 0.0, gap_sum = 0.0;
-  int ncon = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (p[i] > 0.0) {
-      ++ncon;
-      fsum += p[i];
-      gap_sum += h[i] + u[i];
-    }
-  }
-  res.contact_elements = ncon;
-  res.fn = fsum * area;
-  res.pen = force_given ? (ncon ? gap_sum / ncon : 0.0) : value;
-  // Independent check of the contact conditions, so that a wrong answer can never be reported as
-  // converged: gap ≈ 0 where loaded, no penetration elsewhere, finite values. The tolerance is
-  // generous (the CG stop is on the pressure change, not on the gap) but far below any error that
-  // would show in the printed results.
-  if (res.converged) {
-    double scale = 0.0, worst = 0.0;
-    bool finite = true;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (is_excluded(h[i])) continue;
-      finite = finite && std::isfinite(p[i]) && std::isfinite(u[i]);
-      const double gap = h[i] + u[i] - res.pen;
-      scale = std::max(scale, std::abs(u[i]));
-      worst = std::max(worst, p[i] > 0.0 ? std::abs(gap) : std::max(0.0, -gap));
-    }
-    const double tolerance = std::max(100.0 * settings.eps, 1e-10) * std::max(scale, 1e-300);
-    if (!finite || worst > tolerance) {
-      res.converged = false;
-      res.message = fmt::format(
-          "NormCG stopped after {} iterations but the contact conditions are violated by {:.3e} mm "
-          "(tolerance {:.3e} mm)",
-          res.iterations, worst, tolerance);
-    }
-  }
-  if (!res.converged && res.message.empty())
-    res.message = fmt::format(
-        "NormCG did not converge in {} iterations (relative change {:.3e} > EPS {:.3e})",
-        res.iterations, res.residual, settings.eps);
+  finish(h, force_given, value, settings, res);
   return res;
 }
 

@@ -58,6 +58,15 @@ class NormalSolver {
                      double poisson = 0.3, double modulus = 1.0);
 
  private:
+  /// Initial pressure (estimate or `initial`, clipped to p ≥ 0, scaled to the force) and its
+  /// displacement in res.pn, res.un. Returns false when the start is already the answer (no
+  /// element penetrates under a prescribed approach).
+  bool start(const std::vector<double>& h, NormalLoad load, double value,
+             const std::vector<double>* initial, double poisson, double modulus, NormalResult& res);
+  /// Final consistent displacement, force, approach and contact count, and the independent check
+  /// of the contact conditions that may revoke res.converged.
+  void finish(const std::vector<double>& h, bool force_given, double value,
+              const NormalSettings& settings, NormalResult& res);
   void apply_sparse_correction(const std::vector<int>& changed, const std::vector<double>& delta,
                                std::vector<double>& u);
 
