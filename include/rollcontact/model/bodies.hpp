@@ -29,6 +29,15 @@ struct SimplifiedParameters {
   double k0 = 1.0, alpha_inf = 1.0, beta = 0.0;
 };
 
+/// Kalker's material difference parameter K = (G/4)[(1−2ν₁)/G₁ − (1−2ν₂)/G₂] with
+/// 1/G = ½(1/G₁ + 1/G₂) (dimensionless; 0 for quasi-identical bodies, which decouples the normal
+/// and tangential problems), without validating the inputs. The one definition used by the
+/// solver and by the readers' checks.
+inline double material_difference_k(double nu1, double nu2, double g1, double g2) {
+  const double g = 2.0 / (1.0 / g1 + 1.0 / g2);
+  return 0.25 * g * ((1.0 - 2.0 * nu1) / g1 - (1.0 - 2.0 * nu2) / g2);
+}
+
 struct Bodies {
   ElasticBody body1;  ///< the upper body; tractions act on it
   ElasticBody body2;

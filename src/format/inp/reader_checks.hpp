@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "elastic/material.hpp"
+#include "rollcontact/model/bodies.hpp"
 #include "format/inp/case_record.hpp"
 
 namespace rollcontact::format {
@@ -23,7 +23,7 @@ inline bool is_multiple(double x, double h) {
 /// Kalker's material difference parameter K as the readers test it for the MAXOUT override
 /// (0 for quasi-identical bodies); same definition as the solver's.
 inline double material_k(const Materials& m) {
-  return elastic::material_difference_k(m.poiss1, m.poiss2, m.gg1, m.gg2);
+  return model::material_difference_k(m.poiss1, m.poiss2, m.gg1, m.gg2);
 }
 
 }  // namespace rollcontact::format
