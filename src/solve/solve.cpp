@@ -9,11 +9,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 #include "elastic/material.hpp"
 #include "geometry/discretisation.hpp"
 #include "geometry/hertz.hpp"
 #include "normal/normal_solver.hpp"
+#include "physics/friction_law.hpp"
 #include "post/subsurface.hpp"
 #include "rollcontact/errors.hpp"
 #include "simplified/prescribed_pressure.hpp"
@@ -246,7 +248,7 @@ class CaseSolver {
   bool prescribed_ = false;  ///< B=2,3: normal problem skipped
   bool simplified_ = false;  ///< M=2,3,5: Fastsim / FaStrip instead of the exact theory
   Field simplified_ux_, simplified_uy_;
-  double mu_ = 0.0;
+  std::unique_ptr<physics::FrictionLaw> friction_;
   PreviousFields prev_;
   TangentialOperators* tops_ = nullptr;
   std::vector<std::string> notes_;
@@ -345,7 +347,7 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
                                  : simplified::equivalent_ellipse(grid_, sol_.pn);
   c.g = sol_.material.g;
   c.nu = sol_.material.nu;
-  c.mu = mu_;
+  c.mu = friction_->coefficient();
   c.fn = total_normal_force();
   c.model = simplified::simplified_model(problem_);
   c.creepages = {cksi, ceta, cphi};
@@ -393,11 +395,8 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
   sys.chi = sol_.kinematics.chi;
   sys.a = tops_->view();
   sys.contact.assign(n, 0);
-  sys.bound.assign(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    sys.contact[i] = sol_.pn[i] > 0.0;
-    sys.bound[i] = mu_ * sol_.pn[i];
-  }
+  for (std::size_t i = 0; i < n; ++i) sys.contact[i] = sol_.pn[i] > 0.0;
+  friction_->traction_bounds(sol_.pn, sys.bound);
   RigidShift w = rigid_shift(grid_, problem_, sol_.kinematics, cksi, ceta, cphi);
   sys.bx = std::move(w.wx);
   sys.by = std::move(w.wy);
@@ -484,7 +483,7 @@ void CaseSolver::run() {
   simplified_ = problem_.bodies.compliance != model::TangentialCompliance::ExactHalfSpace;
   // The simplified theory has no normal-tangential coupling.
   coupled_ = !simplified_ && std::abs(sol_.material.k) >= 1e-6;
-  mu_ = problem_.friction.static_coefficient;
+  friction_ = physics::make_friction_law(problem_.friction);
   sol_.kinematics = tangential::effective_kinematics(problem_, grid_, &notes_);
 
   const Solution* prev =
@@ -530,7 +529,8 @@ void CaseSolver::run() {
         fy += tang.py[i];
       }
       const double fn = total_normal_force();
-      const double scale = mu_ * fn > 0.0 ? 1.0 / (mu_ * fn) : 0.0;
+      const double mu = friction_->coefficient();
+      const double scale = mu * fn > 0.0 ? 1.0 / (mu * fn) : 0.0;
       return std::array<double, 2>{fx * grid_.element_area() * scale,
                                    fy * grid_.element_area() * scale};
     };

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/friction_disk.hpp"
 #include "tangential/anderson.hpp"
 #include "tangential/element_problem.hpp"
 #include "tangential/tangential_system.hpp"
@@ -31,9 +32,7 @@ void finalise(const TangentialSystem& sys, TangentialResult& res) {
       res.px[i] = res.py[i] = 0.0;
       continue;
     }
-    const double g = sys.bound[i];
-    const double pabs = std::hypot(res.px[i], res.py[i]);
-    const bool slip = g <= 0.0 || pabs >= g * (1.0 - 1e-9);
+    const bool slip = physics::slips(std::hypot(res.px[i], res.py[i]), sys.bound[i]);
     res.state[i] = slip ? ElementState::Slip : ElementState::Adhesion;
     if (slip) {
       res.sx[i] = sys.bx[i] + ux[i];
@@ -91,11 +90,7 @@ class GaussSeidelSweeper {
       const ElementSolution e = solve_element(cx, cy, d, sys_.bound[ui]);
       const double omega = e.slip ? set.omega_s : set.omega_h;
       double pxn = pxo + omega * (e.px - pxo), pyn = pyo + omega * (e.py - pyo);
-      const double pabs = std::hypot(pxn, pyn);
-      if (pabs > sys_.bound[ui] && pabs > 0.0) {
-        pxn *= sys_.bound[ui] / pabs;
-        pyn *= sys_.bound[ui] / pabs;
-      }
+      physics::project_onto_disk(pxn, pyn, sys_.bound[ui]);
       const double dpx = pxn - pxo, dpy = pyn - pyo;
       px[ui] = pxn;
       py[ui] = pyn;
@@ -164,11 +159,7 @@ void iterate_with_acceleration(const TangentialSystem& sys, const TangentialSett
   auto project = [&](std::vector<double>& px, std::vector<double>& py) {
     for (int i : elements) {
       const std::size_t u = static_cast<std::size_t>(i);
-      const double pabs = std::hypot(px[u], py[u]);
-      if (pabs > sys.bound[u] && pabs > 0.0) {
-        px[u] *= sys.bound[u] / pabs;
-        py[u] *= sys.bound[u] / pabs;
-      }
+      physics::project_onto_disk(px[u], py[u], sys.bound[u]);
     }
   };
   const std::size_t m = 2 * elements.size();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/friction_disk.hpp"
 #include "tangential/element_problem.hpp"
 #include "tangential/tangential_system.hpp"
 
@@ -51,11 +52,7 @@ class PreconditionedJacobi {
     for (std::size_t i = 0; i < n; ++i) {
       if (!sys_.contact[i]) continue;
       if (adhesion_[i]) {
-        const double pabs = std::hypot(px[i], py[i]);
-        if (pabs > sys_.bound[i] && pabs > 0.0) {
-          px[i] *= sys_.bound[i] / pabs;
-          py[i] *= sys_.bound[i] / pabs;
-        }
+        physics::project_onto_disk(px[i], py[i], sys_.bound[i]);
         continue;
       }
       const double cx = sx_[i] + qx_[i] - (d_[0] * px[i] + d_[1] * py[i]);

@@ -26,6 +26,7 @@
 #include <cmath>
 #include <limits>
 
+#include "physics/friction_disk.hpp"
 #include "tangential/krylov.hpp"
 #include "tangential/tangential_system.hpp"
 
@@ -124,15 +125,8 @@ class SemismoothNewton {
     }
     // The feasible traction nearest to the iterate: adhesion p = z, slip p = g z/|z|.
     for (std::size_t i : elements_) {
-      const double g = sys_.bound[i];
       double zx = px[i] - r_ * sx_[i], zy = py[i] - r_ * sy_[i];
-      const double zabs = std::hypot(zx, zy);
-      if (g <= 0.0) {
-        zx = zy = 0.0;
-      } else if (zabs > g) {
-        zx *= g / zabs;
-        zy *= g / zabs;
-      }
+      physics::project_onto_disk(zx, zy, sys_.bound[i]);
       px[i] = zx;
       py[i] = zy;
     }
@@ -161,15 +155,8 @@ class SemismoothNewton {
                const std::vector<double>& sx, const std::vector<double>& sy) const {
     double s = 0.0;
     for (std::size_t i : elements_) {
-      const double g = sys_.bound[i];
       double zx = px[i] - r_ * sx[i], zy = py[i] - r_ * sy[i];
-      const double zabs = std::hypot(zx, zy);
-      if (g <= 0.0) {
-        zx = zy = 0.0;
-      } else if (zabs > g) {
-        zx *= g / zabs;
-        zy *= g / zabs;
-      }
+      physics::project_onto_disk(zx, zy, sys_.bound[i]);
       s += (px[i] - zx) * (px[i] - zx) + (py[i] - zy) * (py[i] - zy);
     }
     return std::sqrt(s);
@@ -189,21 +176,21 @@ class SemismoothNewton {
       const std::size_t i = elements_[k];
       ElementLinearisation& e = lin_[k];
       const double g = sys_.bound[i];
-      const double zx = px[i] - r_ * sx_[i], zy = py[i] - r_ * sy_[i];
-      const double zabs = std::hypot(zx, zy);
+      const physics::DiskLinearisation lin =
+          physics::linearise_disk_projection(px[i] - r_ * sx_[i], py[i] - r_ * sy_[i], g);
       e.offset = nu;
-      if (g <= 0.0) {
+      if (lin.region == physics::DiskLinearisation::Region::ZeroBound) {
         e.role = Role::Fixed;
         dpx[i] = -px[i];
         dpy[i] = -py[i];
-      } else if (zabs <= g) {
+      } else if (lin.region == physics::DiskLinearisation::Region::Interior) {
         e.role = Role::Adhesion;
         nu += 2;
       } else {
         e.role = Role::Slip;
-        e.nx = zx / zabs;
-        e.ny = zy / zabs;
-        const double kappa = g / zabs;
+        e.nx = lin.nx;
+        e.ny = lin.ny;
+        const double kappa = lin.kappa;
         e.d = (1.0 - kappa) / (kappa * r_);
         const double tx = -e.ny, ty = e.nx;
         const double tat = tx * (d_[0] * tx + d_[1] * ty) + ty * (d_[2] * tx + d_[3] * ty);
