@@ -23,9 +23,6 @@ namespace {
 using Real = long double;
 constexpr Real kPi = 3.141592653589793238462643383279502884L;
 
-/// Coupling terms are dropped below this |K| (spec §3.2).
-constexpr double kCouplingThreshold = 1e-6;
-
 /// The component whose corner function is evaluated, and the sign of the result relative to it.
 struct BaseComponent {
   Component base;

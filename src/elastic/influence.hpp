@@ -39,6 +39,15 @@ class Kernel {
   std::vector<double> data_;
 };
 
+/// |K| below this: the coupling terms are dropped and the normal and tangential problems are
+/// solved apart (spec §3.2; K = 0 within rounding for equal materials).
+inline constexpr double kCouplingThreshold = 1e-6;
+
+/// True when the material couples the normal and tangential problems (|K| ≥ threshold).
+inline bool is_coupled(const CombinedMaterial& material) noexcept {
+  return material.k >= kCouplingThreshold || material.k <= -kCouplingThreshold;
+}
+
 /// Tabulates component c of the influence matrix for the grid and material (divided by G).
 Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                    double shift_x = 0.0, double shift_y = 0.0);

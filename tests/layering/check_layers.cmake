@@ -10,6 +10,7 @@ set(allowed_core "core")
 set(allowed_grid "")
 set(allowed_physics "physics")
 set(allowed_elastic "elastic;core;grid")
+set(allowed_elastic/operators "elastic;core;grid")
 set(allowed_geometry "geometry;elastic;grid")
 set(allowed_normal "normal;elastic;core;grid")
 set(allowed_tangential "tangential;physics;elastic;core;grid")
@@ -49,7 +50,7 @@ function(check_folder folder files)
   endforeach()
 endfunction()
 
-foreach(folder core grid physics elastic geometry normal tangential simplified post solve
+foreach(folder core grid physics elastic elastic/operators geometry normal tangential simplified post solve
                format/text format/profiles format/inp format/toml format/report batch)
   file(GLOB files "${ROOT}/src/${folder}/*.hpp" "${ROOT}/src/${folder}/*.cpp")
   check_folder(${folder} "${files}")

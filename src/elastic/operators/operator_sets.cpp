@@ -1,0 +1,127 @@
+#include "elastic/operators/operator_sets.hpp"
+
+#include <vector>
+
+#include "elastic/operators/rolling_difference.hpp"
+
+namespace rollcontact::elastic::operators {
+
+void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMaterial& material,
+                     FftChoice fft) {
+  set.grid = grid;
+  set.material = material;
+  set.kernel = make_kernel(Component::nn, grid, material);
+  set.product = std::make_unique<FftConvolution>(set.kernel, fft.backend, fft.planning);
+}
+
+namespace {
+
+/// The plain 3×3 C (zero couplings when K = 0) and the normal displacement due to p_t.
+void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft) {
+  const Grid& grid = s.grid;
+  const CombinedMaterial& material = s.material;
+  s.c_xx = make_kernel(Component::xx, grid, material);
+  s.c_xy = make_kernel(Component::xy, grid, material);
+  s.c_yy = make_kernel(Component::yy, grid, material);
+  s.c_nn = make_kernel(Component::nn, grid, material);
+  if (coupled) {
+    s.c_xn = make_kernel(Component::xn, grid, material);
+    s.c_yn = make_kernel(Component::yn, grid, material);
+    s.nt_x = make_kernel(Component::nx, grid, material);
+    s.nt_y = make_kernel(Component::ny, grid, material);
+    s.nt = std::make_unique<BlockConvolution>(1, 2, std::vector<const Kernel*>{&s.nt_x, &s.nt_y},
+                                              fft.backend, fft.planning);
+  }
+  const Kernel* xn = coupled ? &s.c_xn : nullptr;
+  const Kernel* yn = coupled ? &s.c_yn : nullptr;
+  const Kernel* nx = coupled ? &s.nt_x : nullptr;
+  const Kernel* ny = coupled ? &s.nt_y : nullptr;
+  s.full = std::make_unique<BlockConvolution>(
+      3, 3, std::vector<const Kernel*>{&s.c_xx, &s.c_xy, xn, &s.c_xy, &s.c_yy, yn, nx, ny, &s.c_nn},
+      fft.backend, fft.planning);
+}
+
+/// Steady rolling: A = C − C′ with C′ the coefficients seen from one step downstream.
+void assemble_steady_part(TangentialOperatorSet& s, bool coupled) {
+  const double sx = s.shift_x, sy = s.shift_y;
+  s.xx = difference(s.c_xx, make_kernel(Component::xx, s.grid, s.material, sx, sy));
+  s.xy = difference(s.c_xy, make_kernel(Component::xy, s.grid, s.material, sx, sy));
+  s.yy = difference(s.c_yy, make_kernel(Component::yy, s.grid, s.material, sx, sy));
+  if (coupled) {
+    s.tn_x = difference(s.c_xn, make_kernel(Component::xn, s.grid, s.material, sx, sy));
+    s.tn_y = difference(s.c_yn, make_kernel(Component::yn, s.grid, s.material, sx, sy));
+  }
+}
+
+/// Shift and transient rolling: A = C, and the previous-time displacement of the particles now
+/// at the element centres (C′ when rolling, C for a shift).
+void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice fft) {
+  const bool rolling = s.kind == model::TangentialKind::TransientRolling;
+  const double sx = s.shift_x, sy = s.shift_y;
+  s.xx = s.c_xx;
+  s.xy = s.c_xy;
+  s.yy = s.c_yy;
+  if (coupled) {
+    s.tn_x = s.c_xn;
+    s.tn_y = s.c_yn;
+  }
+  s.prev_xx = rolling ? make_kernel(Component::xx, s.grid, s.material, sx, sy) : s.xx;
+  s.prev_xy = rolling ? make_kernel(Component::xy, s.grid, s.material, sx, sy) : s.xy;
+  s.prev_yy = rolling ? make_kernel(Component::yy, s.grid, s.material, sx, sy) : s.yy;
+  if (coupled) {
+    s.prev_xn = rolling ? make_kernel(Component::xn, s.grid, s.material, sx, sy) : s.c_xn;
+    s.prev_yn = rolling ? make_kernel(Component::yn, s.grid, s.material, sx, sy) : s.c_yn;
+  }
+  s.prev = std::make_unique<BlockConvolution>(
+      2, 3,
+      std::vector<const Kernel*>{&s.prev_xx, &s.prev_xy, coupled ? &s.prev_xn : nullptr, &s.prev_xy,
+                                 &s.prev_yy, coupled ? &s.prev_yn : nullptr},
+      fft.backend, fft.planning);
+}
+
+}  // namespace
+
+void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
+                         const CombinedMaterial& material, model::TangentialKind kind,
+                         double shift_x_mm, double shift_y_mm, FftChoice fft) {
+  // A shift uses C for the previous displacement (material-fixed grid): no rolling step.
+  if (kind == model::TangentialKind::Shift) shift_x_mm = shift_y_mm = 0.0;
+  if (kind == model::TangentialKind::None) kind = model::TangentialKind::SteadyRolling;
+  set.grid = grid;
+  set.material = material;
+  set.kind = kind;
+  set.shift_x = shift_x_mm;
+  set.shift_y = shift_y_mm;
+  const bool coupled = is_coupled(material);
+  assemble_plain(set, coupled, fft);
+  if (set.steady())
+    assemble_steady_part(set, coupled);
+  else
+    assemble_transient_part(set, coupled, fft);
+  set.a = std::make_unique<BlockConvolution>(
+      2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.xy, &set.yy}, fft.backend,
+      fft.planning);
+  if (coupled)
+    set.tn = std::make_unique<BlockConvolution>(
+        2, 1, std::vector<const Kernel*>{&set.tn_x, &set.tn_y}, fft.backend, fft.planning);
+}
+
+void assemble_steady_rolling(SteadyRollingOperatorSet& set, const Grid& grid,
+                             const CombinedMaterial& material, double shift_x_mm, double shift_y_mm,
+                             FftChoice fft) {
+  set.grid = grid;
+  set.material = material;
+  set.shift_x = shift_x_mm;
+  set.shift_y = shift_y_mm;
+  set.c_xx = make_kernel(Component::xx, grid, material);
+  set.c_xy = make_kernel(Component::xy, grid, material);
+  set.c_yy = make_kernel(Component::yy, grid, material);
+  set.xx = difference(set.c_xx, make_kernel(Component::xx, grid, material, shift_x_mm, shift_y_mm));
+  set.xy = difference(set.c_xy, make_kernel(Component::xy, grid, material, shift_x_mm, shift_y_mm));
+  set.yy = difference(set.c_yy, make_kernel(Component::yy, grid, material, shift_x_mm, shift_y_mm));
+  set.a = std::make_unique<BlockConvolution>(
+      2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.xy, &set.yy}, fft.backend,
+      fft.planning);
+}
+
+}  // namespace rollcontact::elastic::operators

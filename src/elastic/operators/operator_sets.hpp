@@ -1,0 +1,77 @@
+#pragma once
+// The influence operators of one grid and material (and rolling step), assembled once and then
+// applied by FFT many times. The solvers' preconditioners are added by the contact layer, which
+// caches these sets (solve/operator_cache.hpp).
+//
+// A set is assembled in place (assemble_*): the FFT products are built from kernels that live
+// in the same object, so a set is created where it stays, never copied or moved.
+
+#include <memory>
+
+#include "elastic/block_convolution.hpp"
+#include "elastic/convolution.hpp"
+#include "elastic/influence.hpp"
+#include "rollcontact/fft_options.hpp"
+#include "rollcontact/model/loading.hpp"
+
+namespace rollcontact::elastic::operators {
+
+struct FftChoice {
+  FftBackendKind backend = FftBackendKind::Default;
+  FftPlanning planning = FftPlanning::Estimate;
+};
+
+/// C_nn/G of one grid and material and its FFT product (the normal problem).
+struct NormalOperatorSet {
+  Grid grid;
+  CombinedMaterial material;
+  Kernel kernel;
+  std::unique_ptr<FftConvolution> product;
+};
+void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMaterial& material,
+                     FftChoice fft);
+
+/// Tangential operators of one grid, material and kind of loading, with the rolling step
+/// (shift_x, shift_y) [mm] (no shift for shifts, model::TangentialKind::Shift):
+///  a     — A = C_tt/G (shift, transient rolling) or (C − C′)_tt/G (steady rolling), 2×2;
+///  prev  — (u′_x, u′_y) from (p_x, p_y, p_n) of the previous time, with C′ (transient rolling)
+///          or C (shift); not for steady rolling;
+///  tn    — tangential displacement per step due to p_n (K ≠ 0), with C or C − C′;
+///  nt    — normal displacement due to (p_x, p_y) with C (K ≠ 0);
+///  full  — plain C (3×3 with the couplings when K ≠ 0) for displacement fields and energy.
+struct TangentialOperatorSet {
+  Grid grid;
+  CombinedMaterial material;
+  model::TangentialKind kind = model::TangentialKind::Shift;
+  double shift_x = 0.0, shift_y = 0.0;  ///< [mm]
+  Kernel xx, xy, yy;
+  std::unique_ptr<BlockConvolution> a;
+  Kernel prev_xx, prev_xy, prev_yy, prev_xn, prev_yn;
+  std::unique_ptr<BlockConvolution> prev;
+  Kernel tn_x, tn_y, nt_x, nt_y;
+  std::unique_ptr<BlockConvolution> tn, nt;
+  Kernel c_xx, c_xy, c_yy, c_xn, c_yn, c_nn;
+  std::unique_ptr<BlockConvolution> full;
+
+  bool steady() const noexcept { return kind == model::TangentialKind::SteadyRolling; }
+};
+/// kind None is treated as steady rolling (as the solver never asks for it).
+void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
+                         const CombinedMaterial& material, model::TangentialKind kind,
+                         double shift_x_mm, double shift_y_mm, FftChoice fft);
+
+/// The steady-rolling operator A = (C − C′)_tt alone, with the plain C_tt its preconditioner is
+/// built from: the coarse levels of the nested-iteration start.
+struct SteadyRollingOperatorSet {
+  Grid grid;
+  CombinedMaterial material;
+  double shift_x = 0.0, shift_y = 0.0;  ///< [mm]
+  Kernel xx, xy, yy;                    ///< C − C′
+  Kernel c_xx, c_xy, c_yy;              ///< C
+  std::unique_ptr<BlockConvolution> a;
+};
+void assemble_steady_rolling(SteadyRollingOperatorSet& set, const Grid& grid,
+                             const CombinedMaterial& material, double shift_x_mm, double shift_y_mm,
+                             FftChoice fft);
+
+}  // namespace rollcontact::elastic::operators

@@ -1,0 +1,147 @@
+#pragma once
+// The operators a PatchSolver applies — influence operators with their FFT products and
+// preconditioners — kept between cases and keyed by what they depend on: grid, material and,
+// for the tangential ones, the kind of loading and the rolling step. Several entries per kind,
+// so that a sequence of patches on different grids (two patches of a wheel, the coarse levels
+// of the nested-iteration start) does not rebuild them case after case.
+//
+// Eviction is least-recently-used, but never of an entry used since the last begin_case(): the
+// references handed out stay valid for the whole case. A cache may therefore hold more entries
+// than its capacity while one case uses more.
+
+#include <cstddef>
+#include <list>
+#include <memory>
+
+#include "elastic/operators/operator_sets.hpp"
+#include "normal/preconditioner.hpp"
+#include "tangential/tangential_preconditioner.hpp"
+#include "tangential/tangential_system.hpp"
+
+namespace rollcontact {
+
+/// C_nn/G with its FFT product and the circulant preconditioner of the normal CG.
+struct NormalOperators : elastic::operators::NormalOperatorSet {
+  std::unique_ptr<normal::CirculantPreconditioner> preconditioner;
+};
+
+/// The tangential set with the block-circulant approximation of C_tt⁻¹·G (for steady rolling
+/// combined with the row sums of (I − T)⁻¹ by the solver).
+struct TangentialOperators : elastic::operators::TangentialOperatorSet {
+  std::unique_ptr<tangential::TangentialPreconditioner> preconditioner;
+
+  tangential::TangentialOperator view() const {
+    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), !steady()};
+  }
+};
+
+/// A coarse level of the steady-rolling start, with the preconditioner from its C_tt.
+struct CoarseSteadyOperators : elastic::operators::SteadyRollingOperatorSet {
+  std::unique_ptr<tangential::TangentialPreconditioner> preconditioner;
+
+  tangential::TangentialOperator view() const {
+    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), false};
+  }
+};
+
+/// What an operator set depends on. Shifts are compared exactly: a different rolling step is a
+/// different operator.
+struct OperatorKey {
+  Grid grid;
+  CombinedMaterial material;
+  model::TangentialKind kind = model::TangentialKind::None;
+  double shift_x = 0.0, shift_y = 0.0;  ///< [mm]
+
+  friend bool operator==(const OperatorKey& a, const OperatorKey& b) noexcept {
+    return a.grid.mx == b.grid.mx && a.grid.my == b.grid.my && a.grid.dx == b.grid.dx &&
+           a.grid.dy == b.grid.dy && a.material.g == b.material.g &&
+           a.material.nu == b.material.nu && a.material.k == b.material.k && a.kind == b.kind &&
+           a.shift_x == b.shift_x && a.shift_y == b.shift_y;
+  }
+};
+
+/// Least-recently-used entries of one kind; see the file comment for the eviction rule.
+template <class Entry>
+class OperatorShelf {
+ public:
+  explicit OperatorShelf(std::size_t capacity) : capacity_(capacity) {}
+
+  /// The entry for `key`, built by `build(Entry&)` in place if missing.
+  template <class Build>
+  Entry& get(const OperatorKey& key, unsigned long case_number, Build&& build) {
+    for (auto it = entries_.begin(); it != entries_.end(); ++it)
+      if (it->key == key) {
+        it->last_case = case_number;
+        entries_.splice(entries_.begin(), entries_, it);
+        return *entries_.front().entry;
+      }
+    auto entry = std::make_unique<Entry>();
+    build(*entry);
+    entries_.push_front({key, std::move(entry), case_number});
+    ++builds_;
+    evict(case_number);
+    return *entries_.front().entry;
+  }
+
+  std::size_t size() const noexcept { return entries_.size(); }
+  std::size_t builds() const noexcept { return builds_; }
+
+ private:
+  struct Slot {
+    OperatorKey key;
+    std::unique_ptr<Entry> entry;
+    unsigned long last_case = 0;
+  };
+
+  void evict(unsigned long case_number) {
+    while (entries_.size() > capacity_) {
+      auto victim = entries_.end();
+      for (auto it = entries_.begin(); it != entries_.end(); ++it)
+        if (it->last_case != case_number) victim = it;  // the last such is the least recent
+      if (victim == entries_.end()) return;             // all in use by this case
+      entries_.erase(victim);
+    }
+  }
+
+  std::size_t capacity_;
+  std::list<Slot> entries_;  ///< most recently used first
+  std::size_t builds_ = 0;
+};
+
+/// Entries kept per kind. A tangential set of a 287×323 grid takes about 0.1 GB, a normal one
+/// a tenth of that; coarse levels a quarter per level.
+struct OperatorCacheCapacity {
+  std::size_t normal = 8;
+  std::size_t tangential = 2;
+  std::size_t coarse_steady = 8;
+};
+
+class OperatorCache {
+ public:
+  explicit OperatorCache(elastic::operators::FftChoice fft, OperatorCacheCapacity capacity = {});
+
+  /// Marks the start of a case: entries used from now on are kept until the next call.
+  void begin_case() noexcept { ++case_number_; }
+
+  NormalOperators& normal(const Grid& grid, const CombinedMaterial& material);
+  /// Tangential operators for shifts, transient or steady rolling with the rolling step
+  /// (shift_x, shift_y) [mm] (ignored for shifts).
+  TangentialOperators& tangential(const Grid& grid, const CombinedMaterial& material,
+                                  model::TangentialKind kind, double shift_x_mm, double shift_y_mm);
+  /// Steady-rolling operator of a coarse level with its (coarse) rolling step [mm].
+  CoarseSteadyOperators& coarse_steady(const Grid& grid, const CombinedMaterial& material,
+                                       double shift_x_mm, double shift_y_mm);
+
+  /// Operator sets assembled so far and held now, all kinds together (for tests and reports).
+  std::size_t builds() const noexcept;
+  std::size_t size() const noexcept;
+
+ private:
+  elastic::operators::FftChoice fft_;
+  unsigned long case_number_ = 0;
+  OperatorShelf<NormalOperators> normal_;
+  OperatorShelf<TangentialOperators> tangential_;
+  OperatorShelf<CoarseSteadyOperators> coarse_steady_;
+};
+
+}  // namespace rollcontact
