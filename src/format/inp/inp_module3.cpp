@@ -174,212 +174,179 @@ std::string_view friction_law_name(int law) {
   }
 }
 
-}  // namespace
+/// The case being read: the stream, the record, the stored state of its contact problem and
+/// the lines of its control words (where errors about digits are reported).
+struct CaseContext {
+  InpStream& in;
+  CaseRecord& p;
+  Module3Stored& st;
+  bool first;  ///< the first case of this contact problem
+  int l1, l2, l3;
+  std::string element;  ///< "result element R [contact problem C]" for messages
+};
 
-CaseRecord Module3Reader::read_case(InpStream& in, int reid, int cpid, int module_line,
-                                    int case_number) {
-  Stored& st = stored_[{reid, cpid}];
-  const bool first = !st.has_case;
-  CaseRecord p = first ? CaseRecord{} : st.last;
-  p.case_number = case_number;
-  p.result_element = reid;
-  p.contact_problem = cpid;
-  p.source = SourceInfo{};
-  p.source.file = in.file();
-  p.source.module_line = module_line;
-  auto warn = [&p](std::string text) { p.source.warnings.push_back(std::move(text)); };
-  const std::string element = cpid == 1
-                                  ? fmt::format("result element {}", reid)
-                                  : fmt::format("result element {} contact problem {}", reid, cpid);
-
-  // ---- lines 1-4: control words ----
-  const ControlWords cw = read_control_words_module3(in);
-  p.digits = cw.digits;
-  p.source.digit_lines = cw.lines;
-  p.source.first_line = cw.lines[0];
-  ControlDigits& d = p.digits;
-  const int l1 = cw.lines[0];
-  const int l2 = cw.lines[1];
-  const int l3 = cw.lines[2];
-
-  // ---- consistency rules that depend on the digits only (§3.2) ----
-  apply_shared_digit_rules(in, d, first, st.last.digits.v, st.has_subsurface, element, l1, l2,
-                           "grid", "no grid is stored yet, use D=2", p.source.warnings);
+/// Consistency rules that depend on the digits only (spec/inp-format.md §3.2).
+void check_digits(CaseContext& c) {
+  InpStream& in = c.in;
+  ControlDigits& d = c.p.digits;
+  apply_shared_digit_rules(in, d, c.first, c.st.last.digits.v, c.st.has_subsurface, c.element, c.l1,
+                           c.l2, "grid", "no grid is stored yet, use D=2", c.p.source.warnings);
   if (d.d != 0 && d.z == 0) {
-    in.fail(l2, fmt::format("D={} requires Z=1 or 2: a new grid needs the undeformed distance "
-                            "to be rebuilt",
-                            d.d));
+    in.fail(c.l2, fmt::format("D={} requires Z=1 or 2: a new grid needs the undeformed distance "
+                              "to be rebuilt",
+                              d.d));
   }
-  if (!first && (st.last.digits.t >= 2) != (d.t >= 2) && d.c == 0) {
-    in.fail(l2, fmt::format("switching from T={} to T={} (rolling <-> non-rolling) requires C≠0",
-                            st.last.digits.t, d.t));
+  if (!c.first && (c.st.last.digits.t >= 2) != (d.t >= 2) && d.c == 0) {
+    in.fail(c.l2, fmt::format("switching from T={} to T={} (rolling <-> non-rolling) requires C≠0",
+                              c.st.last.digits.t, d.t));
   }
   if (d.m == 1 && d.t != 3)
-    in.fail(l2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
+    in.fail(c.l2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
   if (d.h >= 1 && d.t != 3)
-    in.fail(l3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
-  if (d.h == 1 && !st.has_heat) {
-    in.fail(l3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use H=3)",
-                            element));
+    in.fail(c.l3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
+  if (d.h == 1 && !c.st.has_heat) {
+    in.fail(c.l3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use "
+                              "H=3)",
+                              c.element));
   }
-  if (d.b == 4 && d.n != 1) in.fail(l1, "B=4 (SDEC) requires N=1");
+  if (d.b == 4 && d.n != 1) in.fail(c.l1, "B=4 (SDEC) requires N=1");
   if ((d.b == 5 || d.b == 6) && d.n != 0) {
-    in.fail(l1, fmt::format("B={} requires N=0 (approach prescribed)", d.b));
+    in.fail(c.l1, fmt::format("B={} requires N=0 (approach prescribed)", d.b));
   }
+}
 
-  // ---- lines 5-6: iteration parameters (G=1 keeps them) ----
-  if (d.g != 1) read_solver_lines(in, d.g, p.solver);
-
-  // ---- line 7: load and creepages ----
-  {
-    const std::string_view v1 = d.n == 0 ? "PEN" : "FN";
-    const std::string_view v2 = d.f == 0 ? "CKSI" : "FX";
-    const std::string_view v3 = d.f == 2 ? "FY" : "CETA";
-    const GroupValues g = in.read_group({{v1, kReal},
-                                         {v2, kReal},
-                                         {v3, kReal},
-                                         {"CPHI", kReal},
-                                         {"SPINXO", kReal, true},
-                                         {"SPINYO", kReal, true}},
-                                        fmt::format("the load line ({} {} {} CPHI)", v1, v2, v3));
-    auto& k = p.kinematics;
-    if (d.n == 0) {
-      k.pen = g.real(0);
-    } else {
-      k.fn = g.real(0);
-      if (!(k.fn > 0.0)) in.fail(g.line(0), fmt::format("FN = {} must be positive (N=1)", k.fn));
-    }
-    if (d.f == 0) {
-      k.cksi = g.real(1);
-    } else {
-      k.fx_rel = g.real(1);
-      if (!(std::abs(k.fx_rel) <= 1.0)) {
-        in.fail(g.line(1), fmt::format("relative force |FX| = {} exceeds 1", std::abs(k.fx_rel)));
-      }
-    }
-    if (d.f == 2) {
-      k.fy_rel = g.real(2);
-      const double ft2 = k.fx_rel * k.fx_rel + k.fy_rel * k.fy_rel;
-      if (!(ft2 <= 1.0)) {
-        in.fail(g.line(2), fmt::format("relative forces FX² + FY² = {:.6g} exceed 1", ft2));
-      }
-    } else {
-      k.ceta = g.real(2);
-    }
-    k.cphi = g.real(3);
-    // SPINXO alone is ignored: the spin centre needs both coordinates.
-    const bool spin_centre = g.has(4) && g.has(5);
-    k.spinxo = spin_centre ? g.real(4) : 0.0;
-    k.spinyo = spin_centre ? g.real(5) : 0.0;
+/// Line 7: the normal load and the creepages or tangential forces.
+void read_load_line(InpStream& in, const ControlDigits& d, Kinematics& k) {
+  const std::string_view v1 = d.n == 0 ? "PEN" : "FN";
+  const std::string_view v2 = d.f == 0 ? "CKSI" : "FX";
+  const std::string_view v3 = d.f == 2 ? "FY" : "CETA";
+  const GroupValues g = in.read_group({{v1, kReal},
+                                       {v2, kReal},
+                                       {v3, kReal},
+                                       {"CPHI", kReal},
+                                       {"SPINXO", kReal, true},
+                                       {"SPINYO", kReal, true}},
+                                      fmt::format("the load line ({} {} {} CPHI)", v1, v2, v3));
+  if (d.n == 0) {
+    k.pen = g.real(0);
+  } else {
+    k.fn = g.real(0);
+    if (!(k.fn > 0.0)) in.fail(g.line(0), fmt::format("FN = {} must be positive (N=1)", k.fn));
   }
+  if (d.f == 0) {
+    k.cksi = g.real(1);
+  } else {
+    k.fx_rel = g.real(1);
+    if (!(std::abs(k.fx_rel) <= 1.0)) {
+      in.fail(g.line(1), fmt::format("relative force |FX| = {} exceeds 1", std::abs(k.fx_rel)));
+    }
+  }
+  if (d.f == 2) {
+    k.fy_rel = g.real(2);
+    const double ft2 = k.fx_rel * k.fx_rel + k.fy_rel * k.fy_rel;
+    if (!(ft2 <= 1.0)) {
+      in.fail(g.line(2), fmt::format("relative forces FX² + FY² = {:.6g} exceed 1", ft2));
+    }
+  } else {
+    k.ceta = g.real(2);
+  }
+  k.cphi = g.real(3);
+  // SPINXO alone is ignored: the spin centre needs both coordinates.
+  const bool spin_centre = g.has(4) && g.has(5);
+  k.spinxo = spin_centre ? g.real(4) : 0.0;
+  k.spinyo = spin_centre ? g.real(5) : 0.0;
+}
 
-  // ---- lines 8-9: friction law (L=1 keeps it) ----
+/// Lines 8-9: the friction law (L=1 keeps it), and the rules that tie it to H and M.
+void read_friction_law(CaseContext& c) {
+  InpStream& in = c.in;
+  const ControlDigits& d = c.p.digits;
+  Friction& friction = c.p.friction;
   if (d.l != 1) {
-    p.friction.law = d.l;
-    p.friction.rows.clear();
+    friction.law = d.l;
+    friction.rows.clear();
     if (d.v == 0) {
       const FrictionValues fv = read_friction_values(
           in, d.l, fmt::format("the friction line (L={}: {})", d.l, friction_law_name(d.l)));
-      assign_friction_values(fv, p.friction);
-      if (friction_law_has_memory(d.l)) read_friction_memory(in, p.friction);
+      assign_friction_values(fv, friction);
+      if (friction_law_has_memory(d.l)) read_friction_memory(in, friction);
     }
   }
-  const int law = p.friction.law;
-  if (law == 6 && d.h == 0) in.fail(l2, "L=6 (temperature-dependent friction) requires H≥1");
-  if (law == 6 && (d.m == 2 || d.m == 3 || d.m == 5 || d.m == 6 || d.m == 7)) {
-    in.fail(l2, fmt::format("L=6 (temperature-dependent friction) is not allowed with M={}", d.m));
+  if (friction.law == 6 && d.h == 0)
+    in.fail(c.l2, "L=6 (temperature-dependent friction) requires H≥1");
+  if (friction.law == 6 && (d.m == 2 || d.m == 3 || d.m == 5 || d.m == 6 || d.m == 7)) {
+    in.fail(c.l2,
+            fmt::format("L=6 (temperature-dependent friction) is not allowed with M={}", d.m));
   }
+}
 
-  const bool new_materials = d.c == 2 || d.c == 3 || d.c == 4 || d.c == 9;
-
-  // ---- line 10: rolling direction and step ----
+/// Line 10: rolling direction, step and velocity (new materials with T=2, 3).
+void read_rolling_line(CaseContext& c, bool new_materials) {
+  InpStream& in = c.in;
+  const ControlDigits& d = c.p.digits;
+  Kinematics& k = c.p.kinematics;
   if (new_materials && (d.t == 2 || d.t == 3)) {
     const GroupValues g =
         in.read_group({{"CHI", kAngle}, {"DQ", kReal}, {"VELOC", kReal}, {"FACPHI", kReal, true}},
                       "the rolling line (CHI DQ VELOC)");
-    auto& k = p.kinematics;
     k.chi = g.real(0);
     k.dq = g.real(1);
     k.veloc = g.real(2);
     k.facphi = g.has(3) ? g.real(3) : 1.0 / 6.0;
-    const double eps = p.solver.eps;
+    const double eps = c.p.solver.eps;
     if (!(k.dq >= eps))
       in.fail(g.line(1), fmt::format("DQ = {} must be at least EPS = {}", k.dq, eps));
     if (!(k.veloc >= eps)) {
       in.fail(g.line(2), fmt::format("VELOC = {} must be at least EPS = {}", k.veloc, eps));
     }
   }
-  if (d.m == 1 && std::abs(p.kinematics.chi) > 1e-9) {
-    in.fail(l2, fmt::format("M=1 (viscoelastic) requires rolling direction CHI = 0, not {:.6g} rad",
-                            p.kinematics.chi));
+  if (d.m == 1 && std::abs(k.chi) > 1e-9) {
+    in.fail(c.l2,
+            fmt::format("M=1 (viscoelastic) requires rolling direction CHI = 0, not {:.6g} rad",
+                        k.chi));
   }
+}
 
-  // ---- line 11: conformal correction (C=4) ----
-  if (d.c == 4) {
-    const GroupValues g = in.read_group({{"IF_METH", kInt}, {"VARIANT", kInt}, {"NN", kInt}},
-                                        "the C=4 line (IF_METH VARIANT NN)");
-    require_int_range(in, g.line(0), "IF_METH", g.integer(0), 0, 1);
-    require_int_range(in, g.line(1), "VARIANT", g.integer(1), 1, 4);
-    require_int_range(in, g.line(2), "NN", g.integer(2), 1, 9999);
-    const auto nn = static_cast<std::size_t>(g.integer(2));
-    const auto pairs = in.read_reals(2 * nn, "the C=4 table (Y(k) ALPHA(k), k=1..NN)",
-                                     [](std::size_t k) { return k % 2 == 1; });
-    auto& cf = p.materials.conformal;
-    cf.if_meth = g.integer(0);
-    cf.variant = g.integer(1);
-    cf.y.resize(nn);
-    cf.alpha.resize(nn);
-    for (std::size_t k = 0; k < nn; ++k) {
-      cf.y[k] = pairs[2 * k];
-      cf.alpha[k] = pairs[2 * k + 1];
-    }
+/// Line 11 (C=4): the conformal correction table.
+void read_conformal_line(InpStream& in, Materials::Conformal& cf) {
+  const GroupValues g = in.read_group({{"IF_METH", kInt}, {"VARIANT", kInt}, {"NN", kInt}},
+                                      "the C=4 line (IF_METH VARIANT NN)");
+  require_int_range(in, g.line(0), "IF_METH", g.integer(0), 0, 1);
+  require_int_range(in, g.line(1), "VARIANT", g.integer(1), 1, 4);
+  require_int_range(in, g.line(2), "NN", g.integer(2), 1, 9999);
+  const auto nn = static_cast<std::size_t>(g.integer(2));
+  const auto pairs = in.read_reals(2 * nn, "the C=4 table (Y(k) ALPHA(k), k=1..NN)",
+                                   [](std::size_t k) { return k % 2 == 1; });
+  cf.if_meth = g.integer(0);
+  cf.variant = g.integer(1);
+  cf.y.resize(nn);
+  cf.alpha.resize(nn);
+  for (std::size_t k = 0; k < nn; ++k) {
+    cf.y[k] = pairs[2 * k];
+    cf.alpha[k] = pairs[2 * k + 1];
   }
+}
 
-  // ---- line 12: coefficient file (C=9) ----
-  if (d.c == 9) {
-    const GroupValues g = in.read_group({{"CFNAME", FieldKind::string}}, "the C=9 line ('CFNAME')");
-    const std::filesystem::path name(g.text(0));
-    const std::filesystem::path resolved =
-        (name.is_absolute() || base_dir_.empty()) ? name : base_dir_ / name;
-    p.materials.influence_file = resolved.lexically_normal().string();
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(resolved, ec)) {
-      const std::string message =
-          fmt::format("influence coefficient file '{}' not found", g.text(0));
-      if (options_.missing_files_are_errors) in.fail(g.line(0), message, g.text(0));
-      p.source.case_error = fmt::format("{}:{}: {}", in.file(), g.line(0), message);
-    }
-  } else if (new_materials) {
-    p.materials.influence_file.clear();
-  }
-
-  // ---- lines 13-15: material block ----
+/// Lines 13-18: materials (new materials only), damping and heat.
+void read_material_damping_heat(CaseContext& c, bool new_materials) {
+  const ControlDigits& d = c.p.digits;
   if (new_materials) {
-    read_material_block(in, d.b, d.m, p.materials);
-    p.materials.influence_type = d.c;
+    read_material_block(c.in, d.b, d.m, c.p.materials);
+    c.p.materials.influence_type = d.c;
   }
-
-  // ---- line 16: damping ----
-  if (d.m2 == 0) p.damping.enabled = false;
-  if (d.m2 == 2) read_damping_line(in, p.damping);
-
-  // ---- lines 17-18: heat ----
+  if (d.m2 == 0) c.p.damping.enabled = false;
+  if (d.m2 == 2) read_damping_line(c.in, c.p.damping);
   if (d.h == 3) {
-    read_heat_lines(in, d.m == 4, p.heat);
-    st.has_heat = true;
+    read_heat_lines(c.in, d.m == 4, c.p.heat);
+    c.st.has_heat = true;
   }
+}
 
-  // ---- line 19: potential contact area ----
-  // Errors about the grid go to the MX MY .. line when it was read in this case, otherwise to
-  // the control word that asked to keep it.
-  int ipotcn_line = l1;
-  int grid_line = l2;
-  if (d.d == 2) {
-    const PotentialLines lines = read_potential_contact(in, p.potential);
-    ipotcn_line = lines.ipotcn;
-    grid_line = lines.grid;
-  }
-  const PotentialContact& pc = p.potential;
+/// Checks of the IPOTCN value against the digits and the load.
+void check_potential_contact(CaseContext& c, int ipotcn_line) {
+  InpStream& in = c.in;
+  const ControlDigits& d = c.p.digits;
+  const PotentialContact& pc = c.p.potential;
   if ((d.b == 2 || d.b == 3) && pc.ipotcn > 0) {
     in.fail(ipotcn_line,
             fmt::format("B={} requires a Hertzian IPOTCN (< 0), not IPOTCN = {}", d.b, pc.ipotcn));
@@ -391,12 +358,19 @@ CaseRecord Module3Reader::read_case(InpStream& in, int reid, int cpid, int modul
   if ((pc.ipotcn == -4 || pc.ipotcn == -5) && d.n != 1) {
     in.fail(ipotcn_line, fmt::format("IPOTCN = {} (2-D Hertz) requires N=1", pc.ipotcn));
   }
-  if (pc.ipotcn <= -1 && pc.ipotcn >= -5 && d.n == 0 && p.kinematics.pen < 0.0) {
+  if (pc.ipotcn <= -1 && pc.ipotcn >= -5 && d.n == 0 && c.p.kinematics.pen < 0.0) {
     in.fail(ipotcn_line, fmt::format("Hertzian IPOTCN = {} with N=0 requires PEN ≥ 0, not {}",
-                                     pc.ipotcn, p.kinematics.pen));
+                                     pc.ipotcn, c.p.kinematics.pen));
   }
+}
 
-  // Grid checks against the stored coefficients and the previous grid.
+/// The grid against the stored influence coefficients and the previous grid; then remembers
+/// the grid of the coefficients when they are recomputed (C ≠ 0).
+void check_grid_against_stored(CaseContext& c, int grid_line) {
+  InpStream& in = c.in;
+  const ControlDigits& d = c.p.digits;
+  const PotentialContact& pc = c.p.potential;
+  Module3Stored& st = c.st;
   const GridExtent ext = grid_extent(pc);
   if (d.d != 0 && d.c == 0 && st.has_coefficients) {
     if (pc.mx > st.coef_mx || pc.my > st.coef_my) {
@@ -413,7 +387,7 @@ CaseRecord Module3Reader::read_case(InpStream& in, int reid, int cpid, int modul
                           d.d, ext.dx, ext.dy, st.coef_dx, st.coef_dy));
     }
   }
-  if (!first && d.d == 2 && (d.p != 2 || d.i != 0)) {
+  if (!c.first && d.d == 2 && (d.p != 2 || d.i != 0)) {
     const GridExtent old = grid_extent(st.last.potential);
     if (ext.known && old.known) {
       if (differs(ext.dx, old.dx, 1e-6) || differs(ext.dy, old.dy, 1e-6)) {
@@ -439,66 +413,154 @@ CaseRecord Module3Reader::read_case(InpStream& in, int reid, int cpid, int modul
     st.coef_dx = ext.dx;
     st.coef_dy = ext.dy;
   }
+}
 
-  // ---- line 20: undeformed distance ----
-  if (pc.ipotcn > 0) {
-    if (d.z == 2) {
-      read_geometry(in, pc, p.geometry);
-      st.has_geometry = true;
-    } else if (!st.has_geometry) {
-      in.fail(l2, fmt::format("Z={} uses the stored undeformed distance, but no IBASE block was "
-                              "read for {} (use Z=2)",
-                              d.z, element));
-    }
-    if (p.geometry.ibase == 9 && p.geometry.values.size() != element_count(pc)) {
-      in.fail(l2, fmt::format("the stored IBASE=9 undeformed distance has {} values but the grid "
-                              "has {} elements (use Z=2)",
-                              p.geometry.values.size(), element_count(pc)));
-    }
+/// Line 19: the potential contact area (D=2) and its checks. Errors about the grid go to the
+/// MX MY .. line when it was read in this case, otherwise to the control word that kept it.
+void read_and_check_grid(CaseContext& c) {
+  int ipotcn_line = c.l1;
+  int grid_line = c.l2;
+  if (c.p.digits.d == 2) {
+    const PotentialLines lines = read_potential_contact(c.in, c.p.potential);
+    ipotcn_line = lines.ipotcn;
+    grid_line = lines.grid;
   }
+  check_potential_contact(c, ipotcn_line);
+  check_grid_against_stored(c, grid_line);
+}
 
-  // ---- line 21: variable friction per grid row (V=3) ----
+/// Line 20: the undeformed distance of a non-Hertzian grid (Z=2 reads, Z=1 keeps).
+void read_undeformed_distance(CaseContext& c) {
+  const PotentialContact& pc = c.p.potential;
+  if (pc.ipotcn <= 0) return;
+  const ControlDigits& d = c.p.digits;
+  if (d.z == 2) {
+    read_geometry(c.in, pc, c.p.geometry);
+    c.st.has_geometry = true;
+  } else if (!c.st.has_geometry) {
+    c.in.fail(c.l2, fmt::format("Z={} uses the stored undeformed distance, but no IBASE block was "
+                                "read for {} (use Z=2)",
+                                d.z, c.element));
+  }
+  if (c.p.geometry.ibase == 9 && c.p.geometry.values.size() != element_count(pc)) {
+    c.in.fail(c.l2, fmt::format("the stored IBASE=9 undeformed distance has {} values but the "
+                                "grid has {} elements (use Z=2)",
+                                c.p.geometry.values.size(), element_count(pc)));
+  }
+}
+
+/// Line 21 (V=3): the friction values per grid row.
+void read_friction_rows(CaseContext& c) {
+  InpStream& in = c.in;
+  const ControlDigits& d = c.p.digits;
+  const PotentialContact& pc = c.p.potential;
+  Friction& friction = c.p.friction;
+  const int law = friction.law;
   if (d.v == 3 && d.l != 1) {
     const auto my = static_cast<std::size_t>(pc.my);
-    p.friction.rows.resize(my);
+    friction.rows.resize(my);
     for (std::size_t iy = 0; iy < my; ++iy) {
-      p.friction.rows[iy] =
+      friction.rows[iy] =
           read_friction_values(in, law,
                                fmt::format("the friction line of grid row {} (V=3, L={}: {})",
                                            iy + 1, law, friction_law_name(law)));
     }
-    assign_friction_values(p.friction.rows.front(), p.friction);
-    if (friction_law_has_memory(law)) read_friction_memory(in, p.friction);
+    assign_friction_values(friction.rows.front(), friction);
+    if (friction_law_has_memory(law)) read_friction_memory(in, friction);
   }
-  if (d.v == 3 && p.friction.rows.size() != static_cast<std::size_t>(pc.my)) {
-    in.fail(l2, fmt::format("V=3 with L=1 keeps {} friction rows but the grid has MY = {} rows",
-                            p.friction.rows.size(), pc.my));
+  if (d.v == 3 && friction.rows.size() != static_cast<std::size_t>(pc.my)) {
+    in.fail(c.l2, fmt::format("V=3 with L=1 keeps {} friction rows but the grid has MY = {} rows",
+                              friction.rows.size(), pc.my));
   }
+}
 
-  // ---- line 22: extra rigid slip ----
-  auto& k = p.kinematics;
+/// Line 22: extra rigid slip per element (E=9 reads, E=1 keeps, others clear).
+void read_extra_slip(CaseContext& c) {
+  const ControlDigits& d = c.p.digits;
+  const std::size_t n = element_count(c.p.potential);
+  Kinematics& k = c.p.kinematics;
   if (d.e == 9) {
     k.extra_slip_mode = 9;
-    k.extra_slip =
-        in.read_reals(2 * element_count(pc), "the E=9 extra rigid slip (wx wy per element)");
+    k.extra_slip = c.in.read_reals(2 * n, "the E=9 extra rigid slip (wx wy per element)");
   } else if (d.e != 1) {
     k.extra_slip_mode = d.e;
     k.extra_slip.clear();
-  } else if (k.extra_slip_mode == 9 && k.extra_slip.size() != 2 * element_count(pc)) {
-    in.fail(l2, fmt::format("E=1 keeps {} extra slip values but the grid needs 2·MX·MY = {}",
-                            k.extra_slip.size(), 2 * element_count(pc)));
+  } else if (k.extra_slip_mode == 9 && k.extra_slip.size() != 2 * n) {
+    c.in.fail(c.l2, fmt::format("E=1 keeps {} extra slip values but the grid needs 2·MX·MY = {}",
+                                k.extra_slip.size(), 2 * n));
   }
+}
 
-  // ---- line 23: subsurface points ----
-  if (d.s >= 2) {
+}  // namespace
+
+void Module3Reader::read_coefficient_file(InpStream& in, CaseRecord& p) const {
+  const GroupValues g = in.read_group({{"CFNAME", FieldKind::string}}, "the C=9 line ('CFNAME')");
+  const std::filesystem::path name(g.text(0));
+  const std::filesystem::path resolved =
+      (name.is_absolute() || base_dir_.empty()) ? name : base_dir_ / name;
+  p.materials.influence_file = resolved.lexically_normal().string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(resolved, ec)) {
+    const std::string message = fmt::format("influence coefficient file '{}' not found", g.text(0));
+    if (options_.missing_files_are_errors) in.fail(g.line(0), message, g.text(0));
+    p.source.case_error = fmt::format("{}:{}: {}", in.file(), g.line(0), message);
+  }
+}
+
+CaseRecord Module3Reader::read_case(InpStream& in, int reid, int cpid, int module_line,
+                                    int case_number) {
+  Module3Stored& st = stored_[{reid, cpid}];
+  const bool first = !st.has_case;
+  CaseRecord p = first ? CaseRecord{} : st.last;
+  p.case_number = case_number;
+  p.result_element = reid;
+  p.contact_problem = cpid;
+  p.source = SourceInfo{};
+  p.source.file = in.file();
+  p.source.module_line = module_line;
+
+  // Lines 1-4: control words.
+  const ControlWords cw = read_control_words_module3(in);
+  p.digits = cw.digits;
+  p.source.digit_lines = cw.lines;
+  p.source.first_line = cw.lines[0];
+  CaseContext c{in,
+                p,
+                st,
+                first,
+                cw.lines[0],
+                cw.lines[1],
+                cw.lines[2],
+                cpid == 1 ? fmt::format("result element {}", reid)
+                          : fmt::format("result element {} contact problem {}", reid, cpid)};
+  const ControlDigits& d = p.digits;
+  check_digits(c);
+
+  if (d.g != 1) read_solver_lines(in, d.g, p.solver);  // lines 5-6 (G=1 keeps them)
+  read_load_line(in, d, p.kinematics);                 // line 7
+  read_friction_law(c);                                // lines 8-9
+  const bool new_materials = d.c == 2 || d.c == 3 || d.c == 4 || d.c == 9;
+  read_rolling_line(c, new_materials);                           // line 10
+  if (d.c == 4) read_conformal_line(in, p.materials.conformal);  // line 11
+  if (d.c == 9) {                                                // line 12
+    read_coefficient_file(in, p);
+  } else if (new_materials) {
+    p.materials.influence_file.clear();
+  }
+  read_material_damping_heat(c, new_materials);  // lines 13-18
+  read_and_check_grid(c);                        // line 19
+  read_undeformed_distance(c);                   // line 20
+  read_friction_rows(c);                         // line 21
+  read_extra_slip(c);                            // line 22
+  if (d.s >= 2) {                                // line 23: subsurface points
     read_subsurface_block(in, d.s, p.subsurface, p.source.warnings);
     if (d.s == 3) st.has_subsurface = true;
   }
 
-  // ---- overrides after reading ----
+  // Overrides after reading.
   if (p.solver.maxout > 1 && std::abs(material_k(p.materials)) < 1e-10) {
-    warn(fmt::format("MAXOUT = {} overridden to 1: the materials are quasi-identical (K = 0)",
-                     p.solver.maxout));
+    p.source.warnings.push_back(fmt::format(
+        "MAXOUT = {} overridden to 1: the materials are quasi-identical (K = 0)", p.solver.maxout));
     p.solver.maxout = 1;
   }
 
