@@ -217,79 +217,90 @@ bool is_slices_extension(const std::filesystem::path& p, bool wheel) {
   return ext == (wheel ? ".slcw" : ".slcs");
 }
 
-}  // namespace
+/// The case being read: the stream, the record, the stored state of its result element, the
+/// digits of the previous case and the lines of the control words.
+struct CaseContext {
+  InpStream& in;
+  WheelRailRecord& p;
+  Module1Stored& st;
+  bool first;  ///< the first case of this result element
+  ControlDigits previous_digits;
+  int l1, l2, l3;
+  std::string element;  ///< "result element R" for messages
+};
 
-WheelRailRecord Module1Reader::read_case(InpStream& in, int reid, int module_line,
-                                         int case_number) {
-  Stored& st = stored_[reid];
-  const bool first = !st.has_case;
-  WheelRailRecord p = first ? WheelRailRecord{} : st.last;
-  p.case_number = case_number;
-  p.result_element = reid;
-  p.source = SourceInfo{};
-  p.source.file = in.file();
-  p.source.module_line = module_line;
-  auto warn = [&p](std::string text) { p.source.warnings.push_back(std::move(text)); };
-  const std::string element = fmt::format("result element {}", reid);
-
-  // ---- lines 1-4: control words ----
-  const Module1Words cw = read_control_words_module1(in);
-  const ControlDigits previous_digits = p.digits;
-  p.digits = cw.digits;
-  p.config = cw.config;
-  p.source.digit_lines = cw.lines;
-  p.source.first_line = cw.lines[0];
-  ControlDigits& d = p.digits;
-  const int l1 = cw.lines[0];
-  const int l2 = cw.lines[1];
-  const int l3 = cw.lines[2];
-
-  // ---- consistency rules that depend on the digits only (§3.2) ----
-  apply_shared_digit_rules(in, d, first, previous_digits.v, st.has_subsurface, element, l1, l2,
+/// Consistency rules that depend on the digits only (spec/inp-format.md §3.2); C=0 becomes 1.
+void check_digits(CaseContext& c) {
+  InpStream& in = c.in;
+  ControlDigits& d = c.p.digits;
+  const ControlDigits& prev = c.previous_digits;
+  apply_shared_digit_rules(in, d, c.first, prev.v, c.st.has_subsurface, c.element, c.l1, c.l2,
                            "discretisation", "no discretisation is stored yet, use D=2..9",
-                           p.source.warnings);
-  if (!first && (previous_digits.t >= 2) != (d.t >= 2) && d.c == 0) {
-    in.fail(l2, fmt::format("switching from T={} to T={} (rolling <-> non-rolling) requires C≠0",
-                            previous_digits.t, d.t));
+                           c.p.source.warnings);
+  if (!c.first && (prev.t >= 2) != (d.t >= 2) && d.c == 0) {
+    in.fail(c.l2, fmt::format("switching from T={} to T={} (rolling <-> non-rolling) requires C≠0",
+                              prev.t, d.t));
   }
-  if (!first && d.e == 0 && d.n != previous_digits.n) {
-    in.fail(l2, fmt::format("E=0 (keep wheelset) while N changes from {} to {}: the vertical "
-                            "position/force line must be read (use E≥1)",
-                            previous_digits.n, d.n));
+  if (!c.first && d.e == 0 && d.n != prev.n) {
+    in.fail(c.l2, fmt::format("E=0 (keep wheelset) while N changes from {} to {}: the vertical "
+                              "position/force line must be read (use E≥1)",
+                              prev.n, d.n));
   }
-  if (d.f == 1 && d.n != 1) in.fail(l1, "F=1 (prescribed FX_WS) requires N=1");
+  if (d.f == 1 && d.n != 1) in.fail(c.l1, "F=1 (prescribed FX_WS) requires N=1");
   if (d.c == 0) {
-    warn("C=0 overridden to 1 (influence coefficients are recomputed when needed)");
+    c.p.source.warnings.push_back(
+        "C=0 overridden to 1 (influence coefficients are recomputed when needed)");
     d.c = 1;
   }
-  if (d.c == 1 && !st.has_materials) {
-    in.fail(l2, fmt::format("C=1 keeps the materials, but no material block was read for {} "
-                            "(use C=2, 3 or 4)",
-                            element));
+  if (d.c == 1 && !c.st.has_materials) {
+    in.fail(c.l2, fmt::format("C=1 keeps the materials, but no material block was read for {} "
+                              "(use C=2, 3 or 4)",
+                              c.element));
   }
   if (d.m == 1 && d.t != 3)
-    in.fail(l2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
+    in.fail(c.l2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
   if (d.h >= 1 && d.t != 3)
-    in.fail(l3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
-  if (d.h == 1 && !st.has_heat) {
-    in.fail(l3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use H=3)",
-                            element));
+    in.fail(c.l3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
+  if (d.h == 1 && !c.st.has_heat) {
+    in.fail(c.l3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use "
+                              "H=3)",
+                              c.element));
   }
-  if ((d.z == 0 || d.z == 1 || d.z == 2) && !st.has_rail) {
-    in.fail(l2, fmt::format("Z={} keeps the rail profile, but none was read for {} (use Z=3)", d.z,
-                            element));
+  if ((d.z == 0 || d.z == 1 || d.z == 2) && !c.st.has_rail) {
+    in.fail(c.l2, fmt::format("Z={} keeps the rail profile, but none was read for {} (use Z=3)",
+                              d.z, c.element));
   }
-  if ((d.e == 0 || d.e == 1 || d.e == 2 || d.e == 4) && !st.has_wheel) {
-    in.fail(l2, fmt::format("E={} keeps the wheel profile, but none was read for {} (use E=3 or 5)",
-                            d.e, element));
+  if ((d.e == 0 || d.e == 1 || d.e == 2 || d.e == 4) && !c.st.has_wheel) {
+    in.fail(c.l2, fmt::format("E={} keeps the wheel profile, but none was read for {} (use E=3 "
+                              "or 5)",
+                              d.e, c.element));
   }
+}
 
-  // ---- lines 5-6: iteration parameters (G=1 keeps them) ----
-  if (d.g != 1) {
-    p.npot_max = clamp_npot_max(read_solver_lines(in, d.g, p.solver), p.source.warnings);
+/// V=1, 2: NVF friction sets at strictly increasing control points (angle or arc length).
+void read_variable_friction(InpStream& in, const ControlDigits& d, WheelRailRecord& p) {
+  const GroupValues g = in.read_group({{"NVF", kInt}}, "the friction variation line (NVF)");
+  require_int_range(in, g.line(0), "NVF", g.integer(0), 1, kMaxFrictionSets);
+  auto& vf = p.variable_friction;
+  for (int k = 1; k <= g.integer(0); ++k) {
+    const auto [position, values] = read_prefixed_friction(in, d.v, d.l, k);
+    if (!vf.positions.empty() && !(position > vf.positions.back())) {
+      in.fail(in.last_line(),
+              fmt::format("friction control points must be strictly increasing: {} = {} "
+                          "follows {}",
+                          d.v == 1 ? "ALPHA" : "SVF", position, vf.positions.back()));
+    }
+    vf.positions.push_back(position);
+    vf.sets.push_back(values);
   }
+  assign_friction_values(vf.sets.front(), p.friction);
+}
 
-  // ---- lines 7-8: friction (L=1 keeps it) ----
+/// Lines 7-8: the friction law (L=1 keeps it), and the rules that tie it to H and M.
+void read_friction_law(CaseContext& c) {
+  InpStream& in = c.in;
+  const ControlDigits& d = c.p.digits;
+  WheelRailRecord& p = c.p;
   if (d.l != 1) {
     p.friction.law = d.l;
     p.friction.rows.clear();
@@ -302,31 +313,24 @@ WheelRailRecord Module1Reader::read_case(InpStream& in, int reid, int module_lin
                                            fmt::join(friction_value_names(d.l), " ")));
       assign_friction_values(fv, p.friction);
     } else {
-      const GroupValues g = in.read_group({{"NVF", kInt}}, "the friction variation line (NVF)");
-      require_int_range(in, g.line(0), "NVF", g.integer(0), 1, kMaxFrictionSets);
-      auto& vf = p.variable_friction;
-      for (int k = 1; k <= g.integer(0); ++k) {
-        const auto [position, values] = read_prefixed_friction(in, d.v, d.l, k);
-        if (!vf.positions.empty() && !(position > vf.positions.back())) {
-          in.fail(in.last_line(),
-                  fmt::format("friction control points must be strictly increasing: {} = {} "
-                              "follows {}",
-                              d.v == 1 ? "ALPHA" : "SVF", position, vf.positions.back()));
-        }
-        vf.positions.push_back(position);
-        vf.sets.push_back(values);
-      }
-      assign_friction_values(vf.sets.front(), p.friction);
+      read_variable_friction(in, d, p);
     }
     if (friction_law_has_memory(d.l)) read_friction_memory(in, p.friction);
   }
   const int law = p.friction.law;
-  if (law == 6 && d.h == 0) in.fail(l2, "L=6 (temperature-dependent friction) requires H≥1");
+  if (law == 6 && d.h == 0) in.fail(c.l2, "L=6 (temperature-dependent friction) requires H≥1");
   if (law == 6 && (d.m == 2 || d.m == 3 || d.m == 5 || d.m == 6 || d.m == 7)) {
-    in.fail(l2, fmt::format("L=6 (temperature-dependent friction) is not allowed with M={}", d.m));
+    in.fail(c.l2,
+            fmt::format("L=6 (temperature-dependent friction) is not allowed with M={}", d.m));
   }
+}
 
-  // ---- line 9: conformal correction method (C=4, no inclination table in module 1) ----
+/// Lines 9-12: conformal method (C=4, no inclination table in module 1), materials (body 1 =
+/// rail, body 2 = wheel), damping and heat.
+void read_materials_damping_heat(CaseContext& c) {
+  InpStream& in = c.in;
+  const ControlDigits& d = c.p.digits;
+  WheelRailRecord& p = c.p;
   if (d.c == 4) {
     const GroupValues g =
         in.read_group({{"IF_METH", kInt}, {"VARIANT", kInt}}, "the C=4 line (IF_METH VARIANT)");
@@ -336,205 +340,260 @@ WheelRailRecord Module1Reader::read_case(InpStream& in, int reid, int module_lin
     p.materials.conformal.if_meth = g.integer(0);
     p.materials.conformal.variant = g.integer(1);
   }
-
-  // ---- line 10: material block (body 1 = rail, body 2 = wheel) ----
   if (d.c >= 2) {
     read_material_block(in, d.b, d.m, p.materials);
     p.materials.influence_type = d.c;
-    st.has_materials = true;
+    c.st.has_materials = true;
   }
-
-  // ---- line 11: damping ----
   if (d.m2 == 0) p.damping.enabled = false;
   if (d.m2 == 2) read_damping_line(in, p.damping);
-
-  // ---- line 12: heat ----
   if (d.h == 3) {
     read_heat_lines(in, d.m == 4, p.heat);
-    st.has_heat = true;
+    c.st.has_heat = true;
   }
+}
 
-  // ---- line 13: discretisation ----
-  if (d.d >= 2) {
-    const GroupValues g = in.read_group({{"DX", kReal},
-                                         {"DS", kReal},
-                                         {"DQREL", kReal},
-                                         {"A_SEP", kAngle},
-                                         {"D_SEP", kReal},
-                                         {"D_COMB", kReal},
-                                         {"D_TURN", kReal, true},
-                                         {"G_MISS", kReal, true}},
-                                        "the discretisation line (DX DS DQREL A_SEP D_SEP D_COMB)");
-    WheelRailDiscretisation ds;
-    ds.method = d.d;
-    ds.dx = g.real(0);
-    ds.ds = g.real(1);
-    ds.dqrel = g.real(2);
-    if (!(ds.dx >= kMinElementSize)) {
-      in.fail(g.line(0), fmt::format("DX = {} must be at least 1e-8", ds.dx));
-    }
-    if (!(ds.ds >= kMinElementSize)) {
-      in.fail(g.line(1), fmt::format("DS = {} must be at least 1e-8", ds.ds));
-    }
-    require_real_range(in, g.line(2), "DQREL", ds.dqrel, 5e-7, 10.0);
-    ds.a_sep = std::max(0.0, g.real(3));
-    ds.d_sep = std::max(0.0, g.real(4));
-    ds.d_comb = g.real(5);
-    if (!(ds.d_sep >= ds.d_comb)) {
-      in.fail(g.line(5),
-              fmt::format("D_SEP = {} must be at least D_COMB = {}", ds.d_sep, ds.d_comb));
-    }
-    ds.d_turn = g.has(6) ? g.real(6) : 2.0 * ds.d_sep - ds.d_comb;
-    ds.g_miss = g.has(7) ? g.real(7) : -1.0;
-    if (!first && (d.t == 1 || d.t == 2) && st.has_discretisation &&
-        (std::abs(ds.dx - p.discretisation.dx) > 1e-6 * p.discretisation.dx ||
-         std::abs(ds.ds - p.discretisation.ds) > 1e-6 * p.discretisation.ds)) {
-      in.fail(
-          g.line(0),
-          fmt::format("transient rolling (T={}): DX, DS = {}, {} must equal the previous {}, {}",
-                      d.t, ds.dx, ds.ds, p.discretisation.dx, p.discretisation.ds));
-    }
-    p.discretisation = ds;
-    st.has_discretisation = true;
+/// Line 13 (D ≥ 2): the discretisation of the contact search and the patches.
+void read_discretisation(CaseContext& c) {
+  InpStream& in = c.in;
+  const ControlDigits& d = c.p.digits;
+  WheelRailRecord& p = c.p;
+  const GroupValues g = in.read_group({{"DX", kReal},
+                                       {"DS", kReal},
+                                       {"DQREL", kReal},
+                                       {"A_SEP", kAngle},
+                                       {"D_SEP", kReal},
+                                       {"D_COMB", kReal},
+                                       {"D_TURN", kReal, true},
+                                       {"G_MISS", kReal, true}},
+                                      "the discretisation line (DX DS DQREL A_SEP D_SEP D_COMB)");
+  WheelRailDiscretisation ds;
+  ds.method = d.d;
+  ds.dx = g.real(0);
+  ds.ds = g.real(1);
+  ds.dqrel = g.real(2);
+  if (!(ds.dx >= kMinElementSize)) {
+    in.fail(g.line(0), fmt::format("DX = {} must be at least 1e-8", ds.dx));
   }
+  if (!(ds.ds >= kMinElementSize)) {
+    in.fail(g.line(1), fmt::format("DS = {} must be at least 1e-8", ds.ds));
+  }
+  require_real_range(in, g.line(2), "DQREL", ds.dqrel, 5e-7, 10.0);
+  ds.a_sep = std::max(0.0, g.real(3));
+  ds.d_sep = std::max(0.0, g.real(4));
+  ds.d_comb = g.real(5);
+  if (!(ds.d_sep >= ds.d_comb)) {
+    in.fail(g.line(5), fmt::format("D_SEP = {} must be at least D_COMB = {}", ds.d_sep, ds.d_comb));
+  }
+  ds.d_turn = g.has(6) ? g.real(6) : 2.0 * ds.d_sep - ds.d_comb;
+  ds.g_miss = g.has(7) ? g.real(7) : -1.0;
+  if (!c.first && (d.t == 1 || d.t == 2) && c.st.has_discretisation &&
+      (std::abs(ds.dx - p.discretisation.dx) > 1e-6 * p.discretisation.dx ||
+       std::abs(ds.ds - p.discretisation.ds) > 1e-6 * p.discretisation.ds)) {
+    in.fail(g.line(0),
+            fmt::format("transient rolling (T={}): DX, DS = {}, {} must equal the previous {}, {}",
+                        d.t, ds.dx, ds.ds, p.discretisation.dx, p.discretisation.ds));
+  }
+  p.discretisation = ds;
+  c.st.has_discretisation = true;
+}
 
-  // ---- lines 14-17: track ----
-  double gaught_for_slices = p.track.gaught;
-  if (d.z == 1 || d.z == 3) {
-    const bool roller = p.is_roller();
-    const GroupValues g = in.read_group({{"GAUGHT", kReal},
-                                         {"G2", kReal},
-                                         {"G3", kReal},
-                                         {roller ? "NOMRADR" : "CANT", roller ? kReal : kAngle},
-                                         {"CURV", kReal, true}},
-                                        roller ? "the track line (GAUGHT G2 G3 NOMRADR {CURV})"
-                                               : "the track line (GAUGHT G2 G3 CANT {CURV})");
-    TrackDimensions& tr = p.track;
-    tr = TrackDimensions{};
-    tr.gaught = g.real(0);
-    if (tr.gaught > 0.0) {
-      tr.gaugsq = g.real(1);
-      tr.gaugwd = g.real(2);
-    } else {
-      tr.raily0 = g.real(1);
-      tr.railz0 = g.real(2);
-    }
-    if (roller) {
-      tr.nomradr = g.real(3);
-      require_positive(in, g.line(3), "NOMRADR", tr.nomradr);
-    } else {
-      tr.cant = g.real(3);
-    }
-    tr.curv = g.has(4) ? g.real(4) : 0.0;
-    gaught_for_slices = tr.gaught;
+/// Line 14 (Z=1, 3): the track dimensions (roller rigs: the roller radius instead of the cant).
+void read_track_line(InpStream& in, WheelRailRecord& p) {
+  const bool roller = p.is_roller();
+  const GroupValues g = in.read_group({{"GAUGHT", kReal},
+                                       {"G2", kReal},
+                                       {"G3", kReal},
+                                       {roller ? "NOMRADR" : "CANT", roller ? kReal : kAngle},
+                                       {"CURV", kReal, true}},
+                                      roller ? "the track line (GAUGHT G2 G3 NOMRADR {CURV})"
+                                             : "the track line (GAUGHT G2 G3 CANT {CURV})");
+  TrackDimensions& tr = p.track;
+  tr = TrackDimensions{};
+  tr.gaught = g.real(0);
+  if (tr.gaught > 0.0) {
+    tr.gaugsq = g.real(1);
+    tr.gaugwd = g.real(2);
+  } else {
+    tr.raily0 = g.real(1);
+    tr.railz0 = g.real(2);
   }
+  if (roller) {
+    tr.nomradr = g.real(3);
+    require_positive(in, g.line(3), "NOMRADR", tr.nomradr);
+  } else {
+    tr.cant = g.real(3);
+  }
+  tr.curv = g.has(4) ? g.real(4) : 0.0;
+}
+
+/// Lines 16-17 (Z=2, 3): rail deviations and, with F=3, the massless rail's stiffness.
+void read_rail_deviations(InpStream& in, const ControlDigits& d, WheelRailRecord& p) {
+  const GroupValues g = in.read_group({{"DYRAIL", kReal},
+                                       {"DZRAIL", kReal},
+                                       {"DROLLR", kAngle},
+                                       {"VYRAIL", kReal},
+                                       {"VZRAIL", kReal},
+                                       {"VROLLR", kAngle}},
+                                      "the rail deviations line (DYRAIL DZRAIL DROLLR VYRAIL "
+                                      "VZRAIL VROLLR)");
+  p.rail_deviations = {g.real(0), g.real(1), g.real(2), g.real(3), g.real(4), g.real(5)};
+  if (d.f == 3) {
+    const GroupValues m = in.read_group({{"KYRAIL", kReal},
+                                         {"FYRAIL", kReal},
+                                         {"KZRAIL", kReal},
+                                         {"FZRAIL", kReal},
+                                         {"DYSTEP0", kReal, true}},
+                                        "the massless rail line (KYRAIL FYRAIL KZRAIL FZRAIL)");
+    p.massless_rail = {m.real(0), m.real(1), m.real(2), m.real(3), m.has(4) ? m.real(4) : 1.0};
+    p.has_massless_rail = true;
+  }
+}
+
+/// Line 18 (E=3, 5): wheelset dimensions (the wheel profile line follows).
+void read_wheelset_line(InpStream& in, WheelRailRecord& p) {
+  const GroupValues g = in.read_group(
+      {{"FBDIST", kReal}, {"FBPOS", kReal}, {"NOMRADW", kReal}, {"YTAPE", kReal, true}},
+      "the wheelset line (FBDIST FBPOS NOMRADW {YTAPE})");
+  p.wheelset = {g.real(0), g.real(1), g.real(2), g.has(3) ? g.real(3) : 1000.0};
+  require_at_least(in, g.line(2), "NOMRADW", p.wheelset.nomradw, 1e-3);
+}
+
+/// Line 20 (E ≥ 1): wheelset position, with the vertical position or force (N).
+void read_position_line(InpStream& in, const ControlDigits& d, WheelRailRecord& p) {
+  WheelsetMotion& mo = p.motion;
+  const bool roller = p.is_roller();
+  const std::string_view p1 = roller ? "X_WS" : "S_WS";
+  const std::string_view p3 = d.n == 0 ? "Z_WS" : "FZ";
+  const GroupValues g =
+      in.read_group({{p1, kReal},
+                     {"Y_WS", kReal},
+                     {p3, kReal},
+                     {"ROLL", kAngle},
+                     {"YAW", kAngle},
+                     {"PITCH", kAngle}},
+                    fmt::format("the wheelset position line ({} Y_WS {} ROLL YAW PITCH)", p1, p3));
+  mo.s = g.real(0);
+  mo.y = g.real(1);
+  if (d.n == 0) {
+    mo.z = g.real(2);
+  } else {
+    mo.fz = g.real(2);
+    if (!(mo.fz > 0.0)) in.fail(g.line(2), fmt::format("FZ = {} must be positive (N=1)", mo.fz));
+  }
+  mo.roll = g.real(3);
+  mo.yaw = g.real(4);
+  mo.pitch = g.real(5);
+}
+
+/// Line 21 (E ≥ 2): wheelset velocities (F=1: the longitudinal force instead of VPITCH).
+void read_velocity_line(InpStream& in, const ControlDigits& d, WheelRailRecord& p) {
+  WheelsetMotion& mo = p.motion;
+  const bool roller = p.is_roller();
+  const std::string_view q1 = roller ? "RPITCH" : "VS";
+  const std::string_view q6 = d.f == 1 ? "FX_WS" : "VPITCH";
+  const GroupValues g =
+      in.read_group({{q1, roller ? kAngle : kReal},
+                     {"VY", kReal},
+                     {"VZ", kReal},
+                     {"VROLL", kAngle},
+                     {"VYAW", kAngle},
+                     {q6, d.f == 1 ? kReal : kAngle}},
+                    fmt::format("the wheelset velocity line ({} VY VZ VROLL VYAW {})", q1, q6));
+  (roller ? mo.rpitch : mo.vs) = g.real(0);
+  mo.vy = g.real(1);
+  mo.vz = g.real(2);
+  mo.vroll = g.real(3);
+  mo.vyaw = g.real(4);
+  (d.f == 1 ? mo.fx : mo.vpitch) = g.real(5);
+}
+
+/// Line 22 (E=4, 5): deviations of a flexible wheel and their rates.
+void read_flexible_wheel(InpStream& in, WheelRailRecord& p) {
+  const GroupValues g1 = in.read_group({{"DXWHL", kReal},
+                                        {"DYWHL", kReal},
+                                        {"DZWHL", kReal},
+                                        {"DROLLW", kAngle},
+                                        {"DYAWW", kAngle},
+                                        {"DPITCHW", kAngle}},
+                                       "the flexible wheel line (DXWHL DYWHL DZWHL DROLLW DYAWW "
+                                       "DPITCHW)");
+  const GroupValues g2 = in.read_group({{"VXWHL", kReal},
+                                        {"VYWHL", kReal},
+                                        {"VZWHL", kReal},
+                                        {"VROLLW", kAngle},
+                                        {"VYAWW", kAngle},
+                                        {"VPITCHW", kAngle}},
+                                       "the flexible wheel rates line (VXWHL VYWHL VZWHL VROLLW "
+                                       "VYAWW VPITCHW)");
+  p.wheel_deviations = {g1.real(0), g1.real(1), g1.real(2), g1.real(3), g1.real(4), g1.real(5),
+                        g2.real(0), g2.real(1), g2.real(2), g2.real(3), g2.real(4), g2.real(5)};
+}
+
+}  // namespace
+
+WheelRailRecord Module1Reader::read_case(InpStream& in, int reid, int module_line,
+                                         int case_number) {
+  Module1Stored& st = stored_[reid];
+  const bool first = !st.has_case;
+  WheelRailRecord p = first ? WheelRailRecord{} : st.last;
+  p.case_number = case_number;
+  p.result_element = reid;
+  p.source = SourceInfo{};
+  p.source.file = in.file();
+  p.source.module_line = module_line;
+
+  // Lines 1-4: control words.
+  const Module1Words cw = read_control_words_module1(in);
+  const ControlDigits previous_digits = p.digits;
+  p.digits = cw.digits;
+  p.config = cw.config;
+  p.source.digit_lines = cw.lines;
+  p.source.first_line = cw.lines[0];
+  CaseContext c{in,
+                p,
+                st,
+                first,
+                previous_digits,
+                cw.lines[0],
+                cw.lines[1],
+                cw.lines[2],
+                fmt::format("result element {}", reid)};
+  const ControlDigits& d = p.digits;
+  check_digits(c);
+
+  if (d.g != 1) {  // lines 5-6 (G=1 keeps them)
+    p.npot_max = clamp_npot_max(read_solver_lines(in, d.g, p.solver), p.source.warnings);
+  }
+  read_friction_law(c);                  // lines 7-8
+  read_materials_damping_heat(c);        // lines 9-12
+  if (d.d >= 2) read_discretisation(c);  // line 13
+
+  // Lines 14-17: track, rail profile, rail deviations (massless rail).
+  if (d.z == 1 || d.z == 3) read_track_line(in, p);
   if (d.z == 3) {
-    p.rail = read_profile_line(in, /*is_wheel=*/false, gaught_for_slices, p.source.warnings);
+    p.rail = read_profile_line(in, /*is_wheel=*/false, p.track.gaught, p.source.warnings);
     st.has_rail = true;
   }
-  if (d.z == 2 || d.z == 3) {
-    const GroupValues g = in.read_group({{"DYRAIL", kReal},
-                                         {"DZRAIL", kReal},
-                                         {"DROLLR", kAngle},
-                                         {"VYRAIL", kReal},
-                                         {"VZRAIL", kReal},
-                                         {"VROLLR", kAngle}},
-                                        "the rail deviations line (DYRAIL DZRAIL DROLLR VYRAIL "
-                                        "VZRAIL VROLLR)");
-    p.rail_deviations = {g.real(0), g.real(1), g.real(2), g.real(3), g.real(4), g.real(5)};
-    if (d.f == 3) {
-      const GroupValues m = in.read_group({{"KYRAIL", kReal},
-                                           {"FYRAIL", kReal},
-                                           {"KZRAIL", kReal},
-                                           {"FZRAIL", kReal},
-                                           {"DYSTEP0", kReal, true}},
-                                          "the massless rail line (KYRAIL FYRAIL KZRAIL FZRAIL)");
-      p.massless_rail = {m.real(0), m.real(1), m.real(2), m.real(3), m.has(4) ? m.real(4) : 1.0};
-      p.has_massless_rail = true;
-    }
-  }
+  if (d.z == 2 || d.z == 3) read_rail_deviations(in, d, p);
   if (d.f == 3 && !p.has_massless_rail) {
-    in.fail(l1, "F=3 (massless rail) needs the rail stiffness line: use Z=2 or 3");
+    in.fail(c.l1, "F=3 (massless rail) needs the rail stiffness line: use Z=2 or 3");
   }
 
-  // ---- lines 18-22: wheelset ----
+  // Lines 18-22: wheelset, wheel profile, position, velocity, flexible wheel.
   if (d.e == 3 || d.e == 5) {
-    const GroupValues g = in.read_group(
-        {{"FBDIST", kReal}, {"FBPOS", kReal}, {"NOMRADW", kReal}, {"YTAPE", kReal, true}},
-        "the wheelset line (FBDIST FBPOS NOMRADW {YTAPE})");
-    p.wheelset = {g.real(0), g.real(1), g.real(2), g.has(3) ? g.real(3) : 1000.0};
-    require_at_least(in, g.line(2), "NOMRADW", p.wheelset.nomradw, 1e-3);
-    p.wheel = read_profile_line(in, /*is_wheel=*/true, gaught_for_slices, p.source.warnings);
+    read_wheelset_line(in, p);
+    p.wheel = read_profile_line(in, /*is_wheel=*/true, p.track.gaught, p.source.warnings);
     st.has_wheel = true;
   }
-  WheelsetMotion& mo = p.motion;
   if (d.e >= 1) {
-    const bool roller = p.is_roller();
-    const std::string_view p1 = roller ? "X_WS" : "S_WS";
-    const std::string_view p3 = d.n == 0 ? "Z_WS" : "FZ";
-    const GroupValues g = in.read_group(
-        {{p1, kReal},
-         {"Y_WS", kReal},
-         {p3, kReal},
-         {"ROLL", kAngle},
-         {"YAW", kAngle},
-         {"PITCH", kAngle}},
-        fmt::format("the wheelset position line ({} Y_WS {} ROLL YAW PITCH)", p1, p3));
-    mo.s = g.real(0);
-    mo.y = g.real(1);
-    if (d.n == 0) {
-      mo.z = g.real(2);
-    } else {
-      mo.fz = g.real(2);
-      if (!(mo.fz > 0.0)) in.fail(g.line(2), fmt::format("FZ = {} must be positive (N=1)", mo.fz));
-    }
-    mo.roll = g.real(3);
-    mo.yaw = g.real(4);
-    mo.pitch = g.real(5);
+    read_position_line(in, d, p);
     st.has_position = true;
   }
-  if (d.e >= 2) {
-    const bool roller = p.is_roller();
-    const std::string_view q1 = roller ? "RPITCH" : "VS";
-    const std::string_view q6 = d.f == 1 ? "FX_WS" : "VPITCH";
-    const GroupValues g =
-        in.read_group({{q1, roller ? kAngle : kReal},
-                       {"VY", kReal},
-                       {"VZ", kReal},
-                       {"VROLL", kAngle},
-                       {"VYAW", kAngle},
-                       {q6, d.f == 1 ? kReal : kAngle}},
-                      fmt::format("the wheelset velocity line ({} VY VZ VROLL VYAW {})", q1, q6));
-    (roller ? mo.rpitch : mo.vs) = g.real(0);
-    mo.vy = g.real(1);
-    mo.vz = g.real(2);
-    mo.vroll = g.real(3);
-    mo.vyaw = g.real(4);
-    (d.f == 1 ? mo.fx : mo.vpitch) = g.real(5);
-  }
-  if (d.e == 4 || d.e == 5) {
-    const GroupValues g1 = in.read_group({{"DXWHL", kReal},
-                                          {"DYWHL", kReal},
-                                          {"DZWHL", kReal},
-                                          {"DROLLW", kAngle},
-                                          {"DYAWW", kAngle},
-                                          {"DPITCHW", kAngle}},
-                                         "the flexible wheel line (DXWHL DYWHL DZWHL DROLLW DYAWW "
-                                         "DPITCHW)");
-    const GroupValues g2 = in.read_group({{"VXWHL", kReal},
-                                          {"VYWHL", kReal},
-                                          {"VZWHL", kReal},
-                                          {"VROLLW", kAngle},
-                                          {"VYAWW", kAngle},
-                                          {"VPITCHW", kAngle}},
-                                         "the flexible wheel rates line (VXWHL VYWHL VZWHL VROLLW "
-                                         "VYAWW VPITCHW)");
-    p.wheel_deviations = {g1.real(0), g1.real(1), g1.real(2), g1.real(3), g1.real(4), g1.real(5),
-                          g2.real(0), g2.real(1), g2.real(2), g2.real(3), g2.real(4), g2.real(5)};
-  }
+  if (d.e >= 2) read_velocity_line(in, d, p);
+  if (d.e == 4 || d.e == 5) read_flexible_wheel(in, p);
 
-  // ---- line 23: subsurface points ----
-  if (d.s >= 2) {
+  if (d.s >= 2) {  // line 23: subsurface points
     read_subsurface_block(in, d.s, p.subsurface, p.source.warnings);
     if (d.s == 3) st.has_subsurface = true;
   }

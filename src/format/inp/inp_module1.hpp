@@ -15,6 +15,19 @@
 
 namespace rollcontact::format {
 
+/// What a result element remembers between module-1 cases beyond the previous case itself.
+struct Module1Stored {
+  bool has_case = false;
+  WheelRailRecord last;
+  bool has_materials = false;       ///< a material block was read (C=2,3,4)
+  bool has_discretisation = false;  ///< a discretisation line was read (D=2..9)
+  bool has_rail = false;            ///< track dimensions and a rail profile were read
+  bool has_wheel = false;           ///< wheelset dimensions and a wheel profile were read
+  bool has_position = false;        ///< a wheelset position was read
+  bool has_subsurface = false;      ///< an S=3 block list was read
+  bool has_heat = false;            ///< H=3 parameters were read
+};
+
 /// Reads module-1 cases one at a time. Holds the stored state of every result element seen so
 /// far, so one instance must read a whole file (and only one file).
 class Module1Reader {
@@ -29,19 +42,6 @@ class Module1Reader {
   WheelRailRecord read_case(InpStream& in, int reid, int module_line, int case_number);
 
  private:
-  /// What a result element remembers between module-1 cases beyond the previous case itself.
-  struct Stored {
-    bool has_case = false;
-    WheelRailRecord last;
-    bool has_materials = false;       ///< a material block was read (C=2,3,4)
-    bool has_discretisation = false;  ///< a discretisation line was read (D=2..9)
-    bool has_rail = false;            ///< track dimensions and a rail profile were read
-    bool has_wheel = false;           ///< wheelset dimensions and a wheel profile were read
-    bool has_position = false;        ///< a wheelset position was read
-    bool has_subsurface = false;      ///< an S=3 block list was read
-    bool has_heat = false;            ///< H=3 parameters were read
-  };
-
   /// Profile line(s) of §5.1 and the profile or slices file they name; `gaught` is the track's
   /// gauge height in effect (a rail slices file requires GAUGHT <= 0).
   ProfileSpec read_profile_line(InpStream& in, bool is_wheel, double gaught,
@@ -49,7 +49,7 @@ class Module1Reader {
 
   std::filesystem::path base_dir_;
   InpReadOptions options_;
-  std::map<int, Stored> stored_;
+  std::map<int, Module1Stored> stored_;
 };
 
 }  // namespace rollcontact::format
