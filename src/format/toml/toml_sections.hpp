@@ -1,0 +1,35 @@
+#pragma once
+// The section readers of a TOML case (one function per table: [solver], [normal], ...). Each
+// reads its keys from the case table, checks them with file, line and key path, and fills its
+// part of the CaseRecord.
+
+#include "format/toml/toml_table.hpp"
+
+namespace rollcontact::format::toml_input {
+
+/// [solver]: method, iteration limits, tolerance, relaxation.
+void read_solver(Table& c, CaseRecord& p);
+/// [normal]: prescribed force or approach, and the pressure model.
+void read_normal(Table& c, CaseRecord& p);
+/// [tangential]: kind of problem, creepages or forces, rolling step.
+void read_tangential(Table& c, CaseRecord& p);
+/// [friction]: the friction law and its values (per grid row when given so).
+void read_friction(Table& c, CaseRecord& p);
+/// [material]: the bodies, their compliance model, the influence-coefficient file.
+void read_material(Table& c, const Context& ctx, CaseRecord& p);
+/// [grid]: the potential contact area (explicit or Hertzian).
+void read_grid(Table& c, CaseRecord& p);
+/// [geometry]: the undeformed distance of a non-Hertzian grid.
+void read_geometry(Table& c, CaseRecord& p);
+/// [output]: what is written and how much.
+void read_output(Table& c, CaseRecord& p);
+/// [damping]: damping of the iteration.
+void read_damping(Table& c, CaseRecord& p);
+/// [heat]: the temperature calculation.
+void read_heat(Table& c, CaseRecord& p);
+/// [subsurface]: blocks of points for subsurface stresses.
+void read_subsurface(Table& c, CaseRecord& p);
+/// Checks that need the grid: per-element arrays and friction rows.
+void check_grid_sizes(Table& c, const CaseRecord& p);
+
+}  // namespace rollcontact::format::toml_input
