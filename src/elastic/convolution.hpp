@@ -7,20 +7,14 @@
 #include <vector>
 
 #include "core/fft_backend.hpp"
+#include "core/linear_operator.hpp"
 #include "elastic/influence.hpp"
 
 namespace rollcontact::elastic {
 
-/// Common interface: apply() computes u_I = Σ_J K(I−J) p_J over the whole mx × my grid.
-class LinearOperator {
- public:
-  virtual ~LinearOperator() = default;
-  /// p and u have mx*my entries (ix fastest); u is overwritten. No allocation.
-  virtual void apply(const double* p, double* u) = 0;
-  /// apply() that also returns Σ p_I·u_I, summed in index order: the sum is taken in the last
-  /// pass over u, which saves the caller (CG: d·A·d) another pass over both vectors.
-  virtual double apply_dot(const double* p, double* u) = 0;
-};
+/// The grid operators below are core::LinearOperators: u_I = Σ_J K(I−J) p_J over the whole
+/// mx × my grid.
+using core::LinearOperator;
 
 /// FFT-based product; kernel spectrum and plans made in the constructor. The padded size is
 /// good_fft_size(2mx−1) × good_fft_size(2my−1): at least 2m−1 avoids wrap-around of the linear

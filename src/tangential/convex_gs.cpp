@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/anderson.hpp"
 #include "physics/friction_disk.hpp"
-#include "tangential/anderson.hpp"
 #include "tangential/element_problem.hpp"
 #include "tangential/tangential_system.hpp"
 
@@ -179,7 +179,7 @@ void iterate_with_acceleration(const TangentialSystem& sys, const TangentialSett
     }
   };
   project(res.px, res.py);
-  AndersonAccelerator anderson(m, settings.anderson_depth);
+  core::AndersonAccelerator anderson(m, settings.anderson_depth);
   std::vector<double> x = pack(res.px, res.py);
   double best = std::numeric_limits<double>::infinity();
   for (int it = 1; it <= settings.max_iterations; ++it) {

@@ -26,8 +26,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/krylov.hpp"
 #include "physics/friction_disk.hpp"
-#include "tangential/krylov.hpp"
 #include "tangential/tangential_system.hpp"
 
 namespace rollcontact::tangential {
@@ -221,7 +221,7 @@ class SemismoothNewton {
         rhs[e.offset] = -(px[i] * tx + py[i] * ty) * zabs / (g * r_) - (tx * ux_[i] + ty * uy_[i]);
       }
     }
-    const LinearMap op = [&](const std::vector<double>& v, std::vector<double>& out) {
+    const core::LinearMap op = [&](const std::vector<double>& v, std::vector<double>& out) {
       scatter(v, fx_, fy_, false);
       sys_.a.apply(fx_, fy_, ux_, uy_);
       out.resize(nu);
@@ -236,7 +236,7 @@ class SemismoothNewton {
         }
       }
     };
-    const LinearMap prec = [&](const std::vector<double>& v, std::vector<double>& out) {
+    const core::LinearMap prec = [&](const std::vector<double>& v, std::vector<double>& out) {
       scatter(v, fx_, fy_, true);
       if (!sys_.a.symmetric) cumulative_sum_from_leading_edge(fx_, fy_);
       sys_.a.preconditioner->apply(fx_.data(), fy_.data(), ux_.data(), uy_.data());
@@ -253,7 +253,7 @@ class SemismoothNewton {
       }
     };
     const double rtol = 0.1;  // inexact Newton: 0.03 and 0.3 measured no better
-    KrylovResult kr;
+    core::KrylovResult kr;
     if (sys_.a.symmetric) {
       // (ux_, uy_) still hold A·δ0; after each PCG step they hold A·Q·d of the step's direction d
       // (the preconditioner overwrites them only after the observer has run).
@@ -261,16 +261,16 @@ class SemismoothNewton {
         ax_[i] = ux_[i];
         ay_[i] = uy_[i];
       }
-      const StepObserver accumulate = [&](double alpha) {
+      const core::StepObserver accumulate = [&](double alpha) {
         for (std::size_t i : elements_) {
           ax_[i] += alpha * ux_[i];
           ay_[i] += alpha * uy_[i];
         }
       };
-      kr = solve_pcg(op, prec, rhs, y, rtol, max_krylov, accumulate);
+      kr = core::solve_pcg(op, prec, rhs, y, rtol, max_krylov, accumulate);
       a_dp_known = true;
     } else {
-      kr = solve_gmres(op, prec, rhs, y, rtol, max_krylov);
+      kr = core::solve_gmres(op, prec, rhs, y, rtol, max_krylov);
       a_dp_known = false;
     }
     products += kr.iterations;

@@ -2,14 +2,14 @@
 // Preconditioned Krylov solvers for the linear systems of the semismooth Newton iteration:
 // conjugate gradients for symmetric positive definite operators (shift, transient rolling) and
 // restarted GMRES with right preconditioning for the non-symmetric steady-rolling operator.
-// Vectors are plain std::vector<double>; operators are callables y = Op(x).
+// Vectors are plain std::vector<double>; operators are LinearMaps (core/linear_operator.hpp).
 
 #include <functional>
 #include <vector>
 
-namespace rollcontact::tangential {
+#include "core/linear_operator.hpp"
 
-using LinearMap = std::function<void(const std::vector<double>& x, std::vector<double>& y)>;
+namespace rollcontact::core {
 
 struct KrylovResult {
   int iterations = 0;              ///< operator applications
@@ -30,4 +30,4 @@ KrylovResult solve_pcg(const LinearMap& a, const LinearMap& m, const std::vector
 KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
                          std::vector<double>& x, double rtol, int max_it, int restart = 40);
 
-}  // namespace rollcontact::tangential
+}  // namespace rollcontact::core

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace rollcontact::tangential {
+namespace rollcontact::core {
 
 class AndersonAccelerator {
  public:
@@ -26,4 +26,4 @@ class AndersonAccelerator {
   bool has_prev_ = false;
 };
 
-}  // namespace rollcontact::tangential
+}  // namespace rollcontact::core

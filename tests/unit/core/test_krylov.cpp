@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "tangential/krylov.hpp"
+#include "core/krylov.hpp"
 
-namespace rollcontact::tangential {
+namespace rollcontact::core {
 namespace {
 
 // 1-D operator −u'' + c·u' (central differences), n unknowns, Dirichlet ends: symmetric positive
@@ -119,4 +119,4 @@ TEST(Krylov, ZeroRightHandSideGivesZero) {
 }
 
 }  // namespace
-}  // namespace rollcontact::tangential
+}  // namespace rollcontact::core

@@ -1,10 +1,10 @@
-#include "tangential/krylov.hpp"
+#include "core/krylov.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 
-namespace rollcontact::tangential {
+namespace rollcontact::core {
 
 namespace {
 
@@ -134,4 +134,4 @@ KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vect
   }
 }
 
-}  // namespace rollcontact::tangential
+}  // namespace rollcontact::core

@@ -1,8 +1,8 @@
-#include "tangential/anderson.hpp"
+#include "core/anderson.hpp"
 
 #include <Eigen/Dense>
 
-namespace rollcontact::tangential {
+namespace rollcontact::core {
 
 AndersonAccelerator::AndersonAccelerator(std::size_t n, int depth) : n_(n), depth_(depth) {}
 
@@ -47,4 +47,4 @@ void AndersonAccelerator::step(std::vector<double>& x, const std::vector<double>
     for (std::size_t i = 0; i < n_; ++i) x[i] -= gamma(j) * dg_[j][i];
 }
 
-}  // namespace rollcontact::tangential
+}  // namespace rollcontact::core
