@@ -108,7 +108,7 @@ class PreconditionedJacobi {
   /// Steady rolling: one step with M = C⁻¹ (I − T)⁻¹ (no energy to minimise; full step).
   void steady_step(std::vector<double>& px, std::vector<double>& py) {
     const std::size_t n = sys_.grid.size();
-    cumulative_sum_from_leading_edge();
+    cumulative_sum_from_leading_edge(sys_.grid, sys_.chi, rx_, ry_);
     sys_.a.preconditioner->apply(rx_.data(), ry_.data(), zx_.data(), zy_.data());
     for (std::size_t i = 0; i < n; ++i)
       if (!adhesion_[i]) zx_[i] = zy_[i] = 0.0;
@@ -116,23 +116,6 @@ class PreconditionedJacobi {
     for (std::size_t i = 0; i < n; ++i) {
       px[i] += zx_[i];
       py[i] += zy_[i];
-    }
-  }
-
-  /// r ← (I − T)⁻¹ r: sums along each row from the leading edge (χ = 0: high ix) downwards.
-  void cumulative_sum_from_leading_edge() {
-    const Grid& g = sys_.grid;
-    const bool forward = std::cos(sys_.chi) < 0.0;  // χ = π: leading edge at ix = 0
-    for (int iy = 0; iy < g.my; ++iy) {
-      double ax = 0.0, ay = 0.0;
-      for (int k = 0; k < g.mx; ++k) {
-        const int ix = forward ? k : g.mx - 1 - k;
-        const std::size_t i = g.index(ix, iy);
-        ax += rx_[i];
-        ay += ry_[i];
-        rx_[i] = ax;
-        ry_[i] = ay;
-      }
     }
   }
 

@@ -238,7 +238,7 @@ class SemismoothNewton {
     };
     const core::LinearMap prec = [&](const std::vector<double>& v, std::vector<double>& out) {
       scatter(v, fx_, fy_, true);
-      if (!sys_.a.symmetric) cumulative_sum_from_leading_edge(fx_, fy_);
+      if (!sys_.a.symmetric) cumulative_sum_from_leading_edge(sys_.grid, sys_.chi, fx_, fy_);
       sys_.a.preconditioner->apply(fx_.data(), fy_.data(), ux_.data(), uy_.data());
       out.resize(nu);
       for (std::size_t k = 0; k < elements_.size(); ++k) {
@@ -304,23 +304,6 @@ class SemismoothNewton {
       } else if (e.role == Role::Slip && (!preconditioner || e.circulant)) {
         fx[i] = -e.ny * v[e.offset];
         fy[i] = e.nx * v[e.offset];
-      }
-    }
-  }
-
-  /// r ← (I − T)⁻¹ r: sums along each row from the leading edge (χ = 0: high ix) downwards.
-  void cumulative_sum_from_leading_edge(std::vector<double>& rx, std::vector<double>& ry) const {
-    const Grid& g = sys_.grid;
-    const bool forward = std::cos(sys_.chi) < 0.0;  // χ = π: leading edge at ix = 0
-    for (int iy = 0; iy < g.my; ++iy) {
-      double ax = 0.0, ay = 0.0;
-      for (int k = 0; k < g.mx; ++k) {
-        const int ix = forward ? k : g.mx - 1 - k;
-        const std::size_t i = g.index(ix, iy);
-        ax += rx[i];
-        ay += ry[i];
-        rx[i] = ax;
-        ry[i] = ay;
       }
     }
   }

@@ -93,4 +93,20 @@ void TangentialPreconditioner::apply(const double* rx, const double* ry, double*
   inverse(3, zy);
 }
 
+void cumulative_sum_from_leading_edge(const Grid& grid, double chi, std::vector<double>& rx,
+                                      std::vector<double>& ry) {
+  const bool forward = std::cos(chi) < 0.0;  // χ = π: leading edge at ix = 0
+  for (int iy = 0; iy < grid.my; ++iy) {
+    double ax = 0.0, ay = 0.0;
+    for (int k = 0; k < grid.mx; ++k) {
+      const int ix = forward ? k : grid.mx - 1 - k;
+      const std::size_t i = grid.index(ix, iy);
+      ax += rx[i];
+      ay += ry[i];
+      rx[i] = ax;
+      ry[i] = ay;
+    }
+  }
+}
+
 }  // namespace rollcontact::tangential

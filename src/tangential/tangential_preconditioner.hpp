@@ -11,6 +11,7 @@
 
 #include "core/fft_backend.hpp"
 #include "elastic/influence.hpp"
+#include "rollcontact/grid.hpp"
 
 namespace rollcontact::tangential {
 
@@ -28,5 +29,10 @@ class TangentialPreconditioner {
   // Inverse symbol per half-spectrum entry (scaled), in the engine's channel layout.
   std::vector<double> ixx_, ixy_, iyy_;
 };
+
+/// r ← (I − T)⁻¹ r for steady rolling, T the shift by one element towards the trailing edge:
+/// sums along each row from the leading edge (χ = 0: high ix; χ = π: ix = 0) downwards.
+void cumulative_sum_from_leading_edge(const Grid& grid, double chi, std::vector<double>& rx,
+                                      std::vector<double>& ry);
 
 }  // namespace rollcontact::tangential

@@ -310,6 +310,27 @@ void read_subsurface_block(InpStream& in, int s, Subsurface& subsurface,
   }
 }
 
+void check_rolling_model_digits(InpStream& in, const ControlDigits& d, bool has_heat,
+                                const std::string& element, int line2, int line3) {
+  if (d.m == 1 && d.t != 3)
+    in.fail(line2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
+  if (d.h >= 1 && d.t != 3)
+    in.fail(line3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
+  if (d.h == 1 && !has_heat) {
+    in.fail(line3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use "
+                               "H=3)",
+                               element));
+  }
+}
+
+void check_friction_law_digits(InpStream& in, const ControlDigits& d, int law, int line2) {
+  if (law == 6 && d.h == 0) in.fail(line2, "L=6 (temperature-dependent friction) requires H≥1");
+  if (law == 6 && (d.m == 2 || d.m == 3 || d.m == 5 || d.m == 6 || d.m == 7)) {
+    in.fail(line2,
+            fmt::format("L=6 (temperature-dependent friction) is not allowed with M={}", d.m));
+  }
+}
+
 void apply_shared_digit_rules(InpStream& in, ControlDigits& d, bool first, int previous_v,
                               bool has_subsurface, const std::string& element, int line1, int line2,
                               std::string_view kept_grid, std::string_view keep_grid_hint,

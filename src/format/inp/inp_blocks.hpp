@@ -23,6 +23,15 @@ std::optional<int> read_solver_lines(InpStream& in, int g, SolverSettings& solve
 /// `line_fstat`/`line_fkin` are the lines of the two values for the messages.
 void check_coulomb_values(InpStream& in, FrictionValues& fv, int line_fstat, int line_fkin);
 
+/// Rules of the material-model digits shared by modules 1 and 3: M=1 (viscoelastic) and H ≥ 1
+/// (temperature) need steady rolling T=3; H=1 needs heat parameters read before (`has_heat`).
+void check_rolling_model_digits(InpStream& in, const ControlDigits& d, bool has_heat,
+                                const std::string& element, int line2, int line3);
+
+/// L=6 (temperature-dependent friction, `law` in effect) needs H ≥ 1 and is not allowed with the
+/// simplified theories M=2, 3, 5, 6, 7.
+void check_friction_law_digits(InpStream& in, const ControlDigits& d, int law, int line2);
+
 /// Consistency rules of inp-format.md §3.2 that modules 1 and 3 share: in the first case of a
 /// result element P and I are overridden (message to `warnings`) and L=1, D=0/1 are errors
 /// (`kept_grid` names what D keeps, `keep_grid_hint` ends the message); S=1,2 need stored

@@ -20,6 +20,15 @@ struct ControlWords {
 /// values outside their admissible sets.
 ControlWords read_control_words_module3(InpStream& in);
 
+/// Control words of a module-1 case: CPBTNFS, VLDCMZE {10*GAPWGT+M2}, XHGIAOWR and PSFLCIN
+/// {READLN} when X=1, with C1 (the configuration) apart from the digits.
+struct Module1Words {
+  ControlDigits digits;
+  int config = 0;
+  std::array<int, 4> lines{};
+};
+Module1Words read_control_words_module1(InpStream& in);
+
 /// Digits X H G I A O W R of control word 3 (same layout in both modules); unchecked.
 void decode_word3(int v3, ControlDigits& d);
 

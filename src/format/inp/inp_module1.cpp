@@ -35,117 +35,6 @@ constexpr double kMinChord = 5.0, kMaxChord = 500.0;  // profile length [mm]
 constexpr int kMaxFrictionSets = 10;                  // NVF
 constexpr int kDefaultNpotMax = 20000;
 
-/// Checks that `value` is one of `allowed`; message "digit NAME=v is not a valid value (...)".
-void check_digit(const InpStream& in, int line, std::string_view name, int value,
-                 std::initializer_list<int> allowed, std::string_view allowed_text) {
-  if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
-    in.fail(line, fmt::format("digit {}={} is not a valid value ({})", name, value, allowed_text));
-  }
-}
-
-/// Reads one control word and checks that it is non-negative with at most `max_digits` digits.
-GroupValues read_word(InpStream& in, std::string_view name, int max_digits,
-                      std::string_view second_name = {}) {
-  const GroupValues g =
-      second_name.empty()
-          ? in.read_group({{name, kInt}}, "the control words")
-          : in.read_group({{name, kInt}, {second_name, kInt, true}}, "the control words");
-  const int value = g.integer(0);
-  if (value < 0) {
-    in.fail(g.line(0), fmt::format("{} must be a non-negative integer", name),
-            std::to_string(value));
-  }
-  long long limit = 1;
-  for (int k = 0; k < max_digits; ++k) limit *= 10;
-  if (value >= limit) {
-    in.fail(g.line(0), fmt::format("{} has more than {} digits", name, max_digits),
-            std::to_string(value));
-  }
-  return g;
-}
-
-/// Control words of a module-1 case (spec §3): CPBTNFS, VLDCMZE {10*GAPWGT+M2}, XHGIAOWR and
-/// PSFLCIN {READLN} when X=1. Returns the digits, C1 and the lines of the words.
-struct Module1Words {
-  ControlDigits digits;
-  int config = 0;
-  std::array<int, 4> lines{};
-};
-
-Module1Words read_control_words_module1(InpStream& in) {
-  Module1Words out;
-  ControlDigits& d = out.digits;
-
-  const GroupValues w1 = read_word(in, "control word 1 (CPBTNFS)", 7);
-  const int v1 = w1.integer(0);
-  const int l1 = out.lines[0] = w1.line(0);
-  out.config = digit_of(v1, 6);
-  d.p = digit_of(v1, 5);
-  d.b = digit_of(v1, 4);
-  d.t = digit_of(v1, 3);
-  d.n = digit_of(v1, 2);
-  d.f = digit_of(v1, 1);
-  d.s = digit_of(v1, 0);
-  check_digit(in, l1, "C1", out.config, {0, 1, 4, 5}, "0, 1, 4, 5");
-  check_digit(in, l1, "P", d.p, {0, 1, 2, 3}, "0..3");
-  check_digit(in, l1, "B", d.b, {0, 1, 5, 6}, "0, 1, 5, 6");
-  check_digit(in, l1, "T", d.t, {0, 1, 2, 3}, "0..3");
-  check_digit(in, l1, "N", d.n, {0, 1}, "0, 1");
-  check_digit(in, l1, "F", d.f, {0, 1, 3}, "0, 1, 3");
-  check_digit(in, l1, "S", d.s, {0, 1, 2, 3}, "0..3");
-
-  const GroupValues w2 = read_word(in, "control word 2 (VLDCMZE)", 7, "M2");
-  const int v2 = w2.integer(0);
-  const int l2 = out.lines[1] = w2.line(0);
-  d.v = digit_of(v2, 6);
-  d.l = digit_of(v2, 5);
-  d.d = digit_of(v2, 4);
-  d.c = digit_of(v2, 3);
-  d.m = digit_of(v2, 2);
-  d.z = digit_of(v2, 1);
-  d.e = digit_of(v2, 0);
-  check_digit(in, l2, "V", d.v, {0, 1, 2}, "0, 1, 2");
-  if (d.l == 5) {
-    in.fail(l2,
-            "digit L=5 (Polach friction) is only available through the library interface, not in "
-            ".inp files");
-  }
-  check_digit(in, l2, "L", d.l, {0, 1, 2, 3, 4, 6}, "0, 1, 2, 3, 4, 6");
-  check_digit(in, l2, "C", d.c, {0, 1, 2, 3, 4}, "0..4");
-  check_digit(in, l2, "Z", d.z, {0, 1, 2, 3}, "0..3");
-  d.m2 = 1;
-  d.gapwgt = 0;
-  if (w2.has(1)) {
-    const int second = w2.integer(1);
-    if (second < 0 || second > 12 || second % 10 > 2) {
-      in.fail(l2,
-              "second integer of control word 2 (10*GAPWGT + M2) must have GAPWGT 0..1 and M2 "
-              "0..2",
-              std::to_string(second));
-    }
-    d.m2 = second % 10;
-    d.gapwgt = second / 10;
-  }
-
-  const GroupValues w3 = read_word(in, "control word 3 (XHGIAOWR)", 8);
-  const int v3 = w3.integer(0);
-  const int l3 = out.lines[2] = w3.line(0);
-  decode_word3(v3, d);
-  check_digit(in, l3, "X", d.x, {0, 1}, "0, 1");
-  check_digit(in, l3, "H", d.h, {0, 1, 3}, "0, 1, 3");
-  check_digit(in, l3, "G", d.g, {0, 1, 2, 3, 4, 5}, "0..5");
-  check_digit(in, l3, "A", d.a, {0, 1, 2}, "0..2");
-  check_digit(in, l3, "O", d.o, {0, 1, 2, 3, 4, 5}, "0..5");
-
-  d.debug = DebugDigits{};
-  if (d.x == 1) {
-    const GroupValues w4 = read_word(in, "control word 4 (PSFLCIN)", 7, "READLN");
-    out.lines[3] = w4.line(0);
-    d.debug = decode_debug_word(w4);
-  }
-  return out;
-}
-
 /// Names of the law values after the V=1,2 prefix (spec §4.1).
 std::vector<std::string_view> friction_value_names(int law) {
   switch (law) {
@@ -257,15 +146,7 @@ void check_digits(CaseContext& c) {
                               "(use C=2, 3 or 4)",
                               c.element));
   }
-  if (d.m == 1 && d.t != 3)
-    in.fail(c.l2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
-  if (d.h >= 1 && d.t != 3)
-    in.fail(c.l3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
-  if (d.h == 1 && !c.st.has_heat) {
-    in.fail(c.l3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use "
-                              "H=3)",
-                              c.element));
-  }
+  check_rolling_model_digits(in, d, c.st.has_heat, c.element, c.l2, c.l3);
   if ((d.z == 0 || d.z == 1 || d.z == 2) && !c.st.has_rail) {
     in.fail(c.l2, fmt::format("Z={} keeps the rail profile, but none was read for {} (use Z=3)",
                               d.z, c.element));
@@ -317,12 +198,7 @@ void read_friction_law(CaseContext& c) {
     }
     if (friction_law_has_memory(d.l)) read_friction_memory(in, p.friction);
   }
-  const int law = p.friction.law;
-  if (law == 6 && d.h == 0) in.fail(c.l2, "L=6 (temperature-dependent friction) requires H≥1");
-  if (law == 6 && (d.m == 2 || d.m == 3 || d.m == 5 || d.m == 6 || d.m == 7)) {
-    in.fail(c.l2,
-            fmt::format("L=6 (temperature-dependent friction) is not allowed with M={}", d.m));
-  }
+  check_friction_law_digits(in, d, p.friction.law, c.l2);
 }
 
 /// Lines 9-12: conformal method (C=4, no inclination table in module 1), materials (body 1 =

@@ -200,15 +200,7 @@ void check_digits(CaseContext& c) {
     in.fail(c.l2, fmt::format("switching from T={} to T={} (rolling <-> non-rolling) requires C≠0",
                               c.st.last.digits.t, d.t));
   }
-  if (d.m == 1 && d.t != 3)
-    in.fail(c.l2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
-  if (d.h >= 1 && d.t != 3)
-    in.fail(c.l3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
-  if (d.h == 1 && !c.st.has_heat) {
-    in.fail(c.l3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use "
-                              "H=3)",
-                              c.element));
-  }
+  check_rolling_model_digits(in, d, c.st.has_heat, c.element, c.l2, c.l3);
   if (d.b == 4 && d.n != 1) in.fail(c.l1, "B=4 (SDEC) requires N=1");
   if ((d.b == 5 || d.b == 6) && d.n != 0) {
     in.fail(c.l1, fmt::format("B={} requires N=0 (approach prescribed)", d.b));
@@ -272,12 +264,7 @@ void read_friction_law(CaseContext& c) {
       if (friction_law_has_memory(d.l)) read_friction_memory(in, friction);
     }
   }
-  if (friction.law == 6 && d.h == 0)
-    in.fail(c.l2, "L=6 (temperature-dependent friction) requires H≥1");
-  if (friction.law == 6 && (d.m == 2 || d.m == 3 || d.m == 5 || d.m == 6 || d.m == 7)) {
-    in.fail(c.l2,
-            fmt::format("L=6 (temperature-dependent friction) is not allowed with M={}", d.m));
-  }
+  check_friction_law_digits(in, d, friction.law, c.l2);
 }
 
 /// Line 10: rolling direction, step and velocity (new materials with T=2, 3).

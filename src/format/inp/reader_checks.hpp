@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "rollcontact/model/bodies.hpp"
 #include "format/inp/case_record.hpp"
+#include "rollcontact/model/bodies.hpp"
 
 namespace rollcontact::format {
 
