@@ -13,16 +13,12 @@
 #include "batch/validation_summary.hpp"
 #include "batch/validation_tolerances.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/examples.hpp"
 
 namespace rollcontact::batch {
 namespace {
 
-const std::filesystem::path kExamples = ROLLCONTACT_EXAMPLES_DIR;
-
-#define REQUIRE_EXAMPLES()                                              \
-  if (!std::filesystem::is_directory(kExamples)) {                      \
-    GTEST_SKIP() << "example folder not found: " << kExamples.string(); \
-  }
+using test_support::kExamples;
 
 format::ReportCase make_case(int number, std::map<std::string, double> values) {
   format::ReportCase c;

@@ -11,16 +11,12 @@
 
 #include "format/inp/inp_reader.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/examples.hpp"
 
 namespace rollcontact::format {
 namespace {
 
-const std::filesystem::path kExamples = ROLLCONTACT_EXAMPLES_DIR;
-
-#define REQUIRE_EXAMPLES()                                              \
-  if (!std::filesystem::is_directory(kExamples)) {                      \
-    GTEST_SKIP() << "example folder not found: " << kExamples.string(); \
-  }
+using test_support::kExamples;
 
 std::vector<format::CaseRecord> read_example(const std::string& name) {
   return read_inp_file(kExamples / name);

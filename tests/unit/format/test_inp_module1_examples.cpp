@@ -10,17 +10,13 @@
 #include <vector>
 
 #include "format/inp/inp_reader.hpp"
+#include "support/examples.hpp"
 
 namespace rollcontact::format {
 namespace {
 
-const std::filesystem::path kExamples = ROLLCONTACT_EXAMPLES_DIR;
+using test_support::kExamples;
 constexpr double kDeg = std::numbers::pi / 180.0;
-
-#define REQUIRE_EXAMPLES()                                              \
-  if (!std::filesystem::is_directory(kExamples)) {                      \
-    GTEST_SKIP() << "example folder not found: " << kExamples.string(); \
-  }
 
 std::vector<format::WheelRailRecord> wheel_rail_cases(const std::string& name) {
   std::vector<format::WheelRailRecord> out;

@@ -15,16 +15,12 @@
 #include "format/profiles/profile_slices.hpp"
 #include "format/profiles/profile_table.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/examples.hpp"
 
 namespace rollcontact::format {
 namespace {
 
-const std::filesystem::path kExamples = ROLLCONTACT_EXAMPLES_DIR;
-
-#define REQUIRE_EXAMPLES()                                              \
-  if (!std::filesystem::is_directory(kExamples)) {                      \
-    GTEST_SKIP() << "example folder not found: " << kExamples.string(); \
-  }
+using test_support::kExamples;
 
 /// A temporary folder removed at the end of the test.
 struct TempDir {

@@ -11,16 +11,12 @@
 #include <string>
 
 #include "format/report/report_parser.hpp"
+#include "support/examples.hpp"
 
 namespace rollcontact::format {
 namespace {
 
-const std::filesystem::path kExamples = ROLLCONTACT_EXAMPLES_DIR;
-
-#define REQUIRE_EXAMPLES()                                              \
-  if (!std::filesystem::is_directory(kExamples)) {                      \
-    GTEST_SKIP() << "example folder not found: " << kExamples.string(); \
-  }
+using test_support::kExamples;
 
 Report parse_text(const std::string& text) {
   std::istringstream in(text);
