@@ -40,7 +40,7 @@ class PatchSolver {
 
   const SolveOptions& options() const noexcept;
 
-  struct Impl;  ///< cached operators and the previous solution (src/solve/state_impl.hpp)
+  struct Impl;  ///< cached operators and the previous solution (src/contact/patch_solver_impl.hpp)
 
  private:
   std::unique_ptr<Impl> impl_;

@@ -1,7 +1,7 @@
 #pragma once
 // The influence operators of one grid and material (and rolling step), assembled once and then
 // applied by FFT many times. The solvers' preconditioners are added by the contact layer, which
-// caches these sets (solve/operator_cache.hpp).
+// caches these sets (contact/operator_cache.hpp).
 //
 // A set is assembled in place (assemble_*): the FFT products are built from kernels that live
 // in the same object, so a set is created where it stays, never copied or moved.

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "rollcontact/solve.hpp"
-#include "solve/operator_cache.hpp"
+#include "contact/operator_cache.hpp"
 
 namespace rollcontact {
 

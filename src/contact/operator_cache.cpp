@@ -1,4 +1,4 @@
-#include "solve/operator_cache.hpp"
+#include "contact/operator_cache.hpp"
 
 namespace rollcontact {
 

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "elastic/material.hpp"
-#include "solve/operator_cache.hpp"
+#include "contact/operator_cache.hpp"
 
 namespace rollcontact {
 namespace {

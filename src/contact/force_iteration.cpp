@@ -1,4 +1,4 @@
-#include "solve/force_iteration.hpp"
+#include "contact/force_iteration.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "solve/state_impl.hpp"
+#include "contact/patch_solver_impl.hpp"
 
 namespace rollcontact {
 

@@ -20,8 +20,8 @@
 #include "rollcontact/errors.hpp"
 #include "simplified/prescribed_pressure.hpp"
 #include "simplified/simplified_solver.hpp"
-#include "solve/force_iteration.hpp"
-#include "solve/state_impl.hpp"
+#include "contact/force_iteration.hpp"
+#include "contact/patch_solver_impl.hpp"
 #include "tangential/kinematics.hpp"
 
 namespace rollcontact {
