@@ -7,18 +7,14 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <charconv>
-#include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <istream>
-#include <mutex>
 #include <numbers>
 #include <ostream>
 #include <sstream>
-#include <thread>
 
+#include "batch/parallel.hpp"
 #include "geometry/hertz.hpp"
 #include "rollcontact/errors.hpp"
 #include "simplified/flexibility.hpp"
@@ -188,46 +184,17 @@ std::vector<TableRow> run_table(std::span<const TableCase> cases, const TableSet
   const std::size_t n = cases.size();
   std::vector<TableRow> rows(n);
   if (n == 0) return rows;
-  const std::size_t nthreads =
+  // One PatchSolver per worker; cyclic order: neighbouring cases (same ellipse, same grid) on
+  // different workers, so every worker keeps its cached operators for 644 cases in a row.
+  const std::size_t nworkers =
       std::clamp<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), 1, n);
-  std::atomic<std::size_t> done{0};
-  std::mutex mutex;
-  std::condition_variable cv;
-  std::vector<std::exception_ptr> errors(nthreads);
-  {
-    std::vector<std::jthread> workers;
-    workers.reserve(nthreads);
-    for (std::size_t t = 0; t < nthreads; ++t)
-      workers.emplace_back([&, t] {
-        try {
-          // Round-robin: neighbouring cases (same ellipse, same grid) on different threads,
-          // so every thread keeps its cached influence coefficients for 644 cases in a row.
-          PatchSolver solver;
-          for (std::size_t i = t; i < n; i += nthreads) {
-            rows[i] = solve_table_case(cases[i], s, solver);
-            done.fetch_add(1);
-            const std::lock_guard<std::mutex> lock(mutex);
-            cv.notify_one();
-          }
-        } catch (...) {
-          errors[t] = std::current_exception();
-          done.fetch_add(n);  // let the waiting loop end
-          const std::lock_guard<std::mutex> lock(mutex);
-          cv.notify_one();
-        }
-      });
-    std::unique_lock<std::mutex> lock(mutex);
-    while (done.load() < n) {
-      cv.wait_for(lock, std::chrono::milliseconds(200), [&] { return done.load() >= n; });
-      if (progress) {
-        lock.unlock();  // workers must not wait for the console
-        progress(std::min(done.load(), n));
-        lock.lock();
-      }
-    }
-  }
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  std::vector<PatchSolver> solvers(nworkers);
+  parallel_for(
+      n, {threads, Schedule::Cyclic},
+      [&](std::size_t worker, std::size_t i) {
+        rows[i] = solve_table_case(cases[i], s, solvers[worker]);
+      },
+      progress);
   return rows;
 }
 

@@ -1,14 +1,13 @@
 #include "batch/validation.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <random>
-#include <thread>
 
+#include "batch/parallel.hpp"
 #include "batch/run_input.hpp"
 #include "format/report/report_parser.hpp"
 #include "rollcontact/errors.hpp"
@@ -164,29 +163,20 @@ std::vector<ExampleResult> validate_folder(const std::filesystem::path& dir,
   const auto output_dir = temporary ? make_temporary_dir() : options.output_dir;
 
   std::vector<ExampleResult> results(examples.size());
-  std::atomic<std::size_t> next{0};
   std::mutex report_mutex;  // serialises on_example and the bookkeeping of finished examples
   std::size_t done = 0;
-  auto worker = [&] {
-    for (std::size_t k = next++; k < examples.size(); k = next++) {
-      ExampleResult r = validate_example(examples[k], output_dir, options);
-      const std::lock_guard<std::mutex> lock(report_mutex);
-      results[k] = std::move(r);
-      ++done;
-      try {
-        if (options.on_example) options.on_example(results[k], done, examples.size());
-      } catch (const std::exception&) {
-        // Progress output is optional (e.g. a closed stderr); the validation goes on.
-      }
-    }
-  };
-  const auto jobs = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(options.jobs, 1)), 1,
-                                            examples.size());
-  {
-    std::vector<std::jthread> helpers;
-    for (std::size_t j = 1; j < jobs; ++j) helpers.emplace_back(worker);
-    worker();
-  }  // joins the helpers
+  parallel_for(examples.size(), {options.jobs, Schedule::Dynamic},
+               [&](std::size_t /*worker*/, std::size_t k) {
+                 ExampleResult r = validate_example(examples[k], output_dir, options);
+                 const std::lock_guard<std::mutex> lock(report_mutex);
+                 results[k] = std::move(r);
+                 ++done;
+                 try {
+                   if (options.on_example) options.on_example(results[k], done, examples.size());
+                 } catch (const std::exception&) {
+                   // Progress output is optional (e.g. a closed stderr); the validation goes on.
+                 }
+               });
 
   if (temporary) {
     std::error_code ignored;  // a leftover temporary folder is not worth failing the validation
