@@ -1,6 +1,6 @@
 // `rollcontact table`: the 3220-case creep-force table of Vollebregt, Iwnicki, Xie & Shackleton
 // (VSD 2012) with one method, written as CSV; with --reference, error statistics of an
-// approximate method against an exact table (src/io/creep_table*.hpp).
+// approximate method against an exact table (src/batch/creep_table*.hpp).
 
 #include <fmt/format.h>
 
@@ -8,16 +8,15 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <memory>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "batch/creep_table.hpp"
 #include "batch/creep_table_stats.hpp"
+#include "batch/parallel.hpp"
 #include "commands.hpp"
 #include "format/text/atomic_file.hpp"
 #include "rollcontact/errors.hpp"
@@ -39,47 +38,19 @@ struct TableOptions {
   bool quiet = false;
 };
 
-std::vector<batch::TableRow> read_reference(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open the reference table");
-  return batch::read_table_csv(in, path);
-}
-
-/// Atomic write for regular files; direct write for devices, pipes and symbolic links
-/// (-o /dev/null, /dev/stdout): the atomic writer's rename would replace the node itself.
-void write_output(const std::string& path, const std::string& content) {
-  std::error_code ec;
-  const auto st = std::filesystem::symlink_status(path, ec);
-  if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
-    std::ofstream out(path, std::ios::binary);
-    out << content;
-    out.flush();
-    if (!out) throw Error("cannot write " + path);
-    return;
-  }
-  format::write_file_atomically(path, content);
-}
-
 int run_table_command(const TableOptions& o) {
   batch::TableSettings settings;
   settings.method = batch::parse_table_method(o.method);
   settings.bound = o.bound;
   settings.mx = o.mx;
   settings.eps = o.eps;
+  batch::check_table_settings(settings);
   const int bound = batch::effective_bound(settings);
-  if (bound != 0 && bound != 2 && bound != 3)
-    throw InputError("--bound", 0, fmt::format("must be 0, 2 or 3, got {}", bound));
-  if (settings.mx < 5) throw InputError("--mx", 0, fmt::format("must be at least 5, got {}", o.mx));
   // Read the reference first: a bad file should fail before an hour of computing.
   std::vector<batch::TableRow> reference;
-  if (!o.reference.empty()) reference = read_reference(o.reference);
-
-  const std::vector<batch::TableCase> all = batch::table_cases();
-  std::vector<batch::TableCase> cases;
-  for (int number : batch::parse_case_selection(o.cases, all.size()))
-    cases.push_back(all[static_cast<std::size_t>(number - 1)]);
-  const unsigned hw = std::thread::hardware_concurrency();
-  const int threads = o.threads > 0 ? o.threads : static_cast<int>(hw > 0 ? hw : 1);
+  if (!o.reference.empty()) reference = batch::read_table_csv_file(o.reference);
+  const std::vector<batch::TableCase> cases = batch::select_table_cases(o.cases);
+  const int threads = batch::default_thread_count(o.threads);
 
   const auto wall0 = std::chrono::steady_clock::now();
   const std::clock_t cpu0 = std::clock();
@@ -99,7 +70,7 @@ int run_table_command(const TableOptions& o) {
 
   std::ostringstream csv;
   batch::write_table_csv(csv, rows);
-  write_output(o.output, csv.str());
+  format::write_output_file(o.output, csv.str());
 
   std::vector<const batch::TableRow*> failed;
   for (const auto& r : rows)
@@ -121,7 +92,8 @@ int run_table_command(const TableOptions& o) {
     const std::string title =
         fmt::format("{} B={} mx={} against {}", o.method, bound, settings.mx, o.reference);
     if (!o.quiet) fmt::print("\n{}", batch::format_statistics_text(st, title));
-    if (!o.stats.empty()) write_output(o.stats, batch::format_statistics_markdown(st, title));
+    if (!o.stats.empty())
+      format::write_output_file(o.stats, batch::format_statistics_markdown(st, title));
   }
   return failed.empty() ? exit_ok : exit_case_failed;
 }

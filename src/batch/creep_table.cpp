@@ -9,6 +9,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <fstream>
 #include <istream>
 #include <numbers>
 #include <ostream>
@@ -294,6 +295,27 @@ std::vector<TableRow> read_table_csv(std::istream& in, const std::string& name) 
     rows.push_back(row);
   }
   return rows;
+}
+
+void check_table_settings(const TableSettings& s) {
+  const int bound = effective_bound(s);
+  if (bound != 0 && bound != 2 && bound != 3)
+    throw InputError("--bound", 0, fmt::format("must be 0, 2 or 3, got {}", bound));
+  if (s.mx < 5) throw InputError("--mx", 0, fmt::format("must be at least 5, got {}", s.mx));
+}
+
+std::vector<TableCase> select_table_cases(const std::string& selection) {
+  const std::vector<TableCase> all = table_cases();
+  std::vector<TableCase> cases;
+  for (int number : parse_case_selection(selection, all.size()))
+    cases.push_back(all[static_cast<std::size_t>(number - 1)]);
+  return cases;
+}
+
+std::vector<TableRow> read_table_csv_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot open the reference table");
+  return read_table_csv(in, path);
 }
 
 }  // namespace rollcontact::batch

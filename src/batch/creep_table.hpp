@@ -38,6 +38,9 @@ struct TableSettings {
 /// The B digit in effect for `s` (resolves the default -1).
 int effective_bound(const TableSettings& s);
 
+/// Throws InputError (naming the option) unless the bound in effect is 0, 2 or 3 and mx ≥ 5.
+void check_table_settings(const TableSettings& s);
+
 /// Fixed data of the assessment.
 inline constexpr double table_g = 82000.0;      ///< shear modulus of both bodies [N/mm²]
 inline constexpr double table_nu = 0.28;        ///< Poisson ratio of both bodies [-]
@@ -99,6 +102,9 @@ std::vector<TableRow> run_table(std::span<const TableCase> cases, const TableSet
 /// Empty text selects all. Throws InputError for malformed text or out-of-range numbers.
 std::vector<int> parse_case_selection(const std::string& text, std::size_t total);
 
+/// The table cases of a selection as parse_case_selection() reads it (empty: all 3220).
+std::vector<TableCase> select_table_cases(const std::string& selection);
+
 /// CSV header and rows (a final column `converged` 1/0 after the required ones). The number
 /// format does not depend on the locale: the same rows give the same bytes.
 std::string table_csv_header();
@@ -106,5 +112,7 @@ void write_table_csv(std::ostream& out, std::span<const TableRow> rows);
 /// Reads a CSV written by write_table_csv (a missing `converged` column means converged).
 /// Throws InputError naming the line for a malformed file. Messages are not stored.
 std::vector<TableRow> read_table_csv(std::istream& in, const std::string& name);
+/// The same from a file; InputError when it cannot be opened.
+std::vector<TableRow> read_table_csv_file(const std::string& path);
 
 }  // namespace rollcontact::batch

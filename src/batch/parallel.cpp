@@ -22,6 +22,12 @@ struct Failure {
 
 }  // namespace
 
+int default_thread_count(int requested) {
+  if (requested > 0) return requested;
+  const unsigned hw = std::thread::hardware_concurrency();
+  return hw > 0 ? static_cast<int>(hw) : 1;
+}
+
 void parallel_for(std::size_t n, const ParallelOptions& options,
                   const std::function<void(std::size_t worker, std::size_t index)>& body,
                   const std::function<void(std::size_t done)>& progress) {

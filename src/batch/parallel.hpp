@@ -28,6 +28,10 @@ struct ParallelOptions {
 ///
 /// A worker that throws stops; the others finish their indices. Afterwards the exception of
 /// the lowest index is rethrown (deterministic whatever the timing).
+/// Worker threads for a request: `requested` when positive, else the machine's hardware threads
+/// (at least 1).
+int default_thread_count(int requested);
+
 void parallel_for(std::size_t n, const ParallelOptions& options,
                   const std::function<void(std::size_t worker, std::size_t index)>& body,
                   const std::function<void(std::size_t done)>& progress = {});

@@ -48,4 +48,17 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
   if (ec) fail(ec.message());
 }
 
+void write_output_file(const std::filesystem::path& path, const std::string& content) {
+  std::error_code ec;
+  const auto st = std::filesystem::symlink_status(path, ec);
+  if (!ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st)) {
+    std::ofstream out(path, std::ios::binary);
+    out << content;
+    out.flush();
+    if (!out) throw Error("cannot write " + path.string());
+    return;
+  }
+  write_file_atomically(path, content);
+}
+
 }  // namespace rollcontact::format
