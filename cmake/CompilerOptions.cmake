@@ -24,8 +24,12 @@ function(rollcontact_add_module name)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
   file(GLOB _srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   add_library(rollcontact_${name} STATIC ${_srcs})
+  # src/ is an include path of the build only: installed, a library exposes include/ alone.
   target_include_directories(rollcontact_${name}
-    PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include> $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>)
-  target_link_libraries(rollcontact_${name} PUBLIC ${ARG_DEPS} PRIVATE rollcontact_warnings)
+    PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include> $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>
+           $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(rollcontact_${name} PUBLIC ${ARG_DEPS}
+                        PRIVATE $<BUILD_INTERFACE:rollcontact_warnings>)
+  set_property(GLOBAL APPEND PROPERTY ROLLCONTACT_LIBRARIES rollcontact_${name})
   set_target_properties(rollcontact_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endfunction()
