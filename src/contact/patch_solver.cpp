@@ -2,8 +2,6 @@
 // problem, tangential problem (with the force iteration and the Panagiotopoulos loop) and the
 // totals.
 
-#include "rollcontact/solve.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,6 +9,8 @@
 #include <cmath>
 #include <memory>
 
+#include "contact/force_iteration.hpp"
+#include "contact/patch_solver_impl.hpp"
 #include "elastic/material.hpp"
 #include "geometry/discretisation.hpp"
 #include "geometry/hertz.hpp"
@@ -18,10 +18,9 @@
 #include "physics/friction_law.hpp"
 #include "post/subsurface.hpp"
 #include "rollcontact/errors.hpp"
+#include "rollcontact/solve.hpp"
 #include "simplified/prescribed_pressure.hpp"
 #include "simplified/simplified_solver.hpp"
-#include "contact/force_iteration.hpp"
-#include "contact/patch_solver_impl.hpp"
 #include "tangential/kinematics.hpp"
 
 namespace rollcontact {

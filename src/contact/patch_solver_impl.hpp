@@ -4,8 +4,8 @@
 
 #include <optional>
 
-#include "rollcontact/solve.hpp"
 #include "contact/operator_cache.hpp"
+#include "rollcontact/solve.hpp"
 
 namespace rollcontact {
 

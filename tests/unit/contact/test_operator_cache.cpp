@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "elastic/material.hpp"
 #include "contact/operator_cache.hpp"
+#include "elastic/material.hpp"
 
 namespace rollcontact {
 namespace {
