@@ -82,6 +82,20 @@ class GeometryError : public ProblemError {
   ErrorCode code() const noexcept override { return ErrorCode::Discretisation; }
 };
 
+/// A value of a model::PatchProblem that no solver can use (not finite, out of its physical
+/// range). field() names it as in the model ("normal.force_N"); what() reads
+/// "normal.force_N = inf: must be a finite number". Front ends add the file, line and case.
+class InvalidValueError : public ProblemError {
+ public:
+  InvalidValueError(std::string field, const std::string& message)
+      : ProblemError(field + message), field_(std::move(field)) {}
+  const std::string& field() const noexcept { return field_; }
+  ErrorCode code() const noexcept override { return ErrorCode::Input; }
+
+ private:
+  std::string field_;
+};
+
 /// A solver failed to converge and the caller asked for strictness.
 class SolverError : public Error {
  public:

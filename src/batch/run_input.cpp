@@ -15,6 +15,7 @@
 #include "format/text/atomic_file.hpp"
 #include "format/toml/toml_case_reader.hpp"
 #include "rollcontact/errors.hpp"
+#include "rollcontact/model/validation.hpp"
 
 namespace rollcontact::batch {
 
@@ -135,10 +136,33 @@ std::vector<format::CaseRecord> read_problems(const std::filesystem::path& input
   return problems;
 }
 
+/// Every case's values pass the model's check before anything is solved or written, so that a
+/// bad value anywhere is an input error naming file, line and case (exit 2, nothing written),
+/// the same for .inp and TOML. Cases that cannot be converted (not supported, a per-case error)
+/// are left to the run, which reports them case by case.
+void validate_cases(const std::vector<format::CaseRecord>& problems) {
+  for (const format::CaseRecord& r : problems) {
+    if (!r.source.case_error.empty() || r.digits.r == 2 || r.digits.r == 3) continue;
+    model::PatchProblem p;
+    try {
+      p = format::to_patch_problem(r);
+    } catch (const Error&) {
+      continue;
+    }
+    try {
+      model::validate(p);
+    } catch (const InvalidValueError& e) {
+      throw InputError(r.source.file, r.source.first_line,
+                       fmt::format("case {}: {}", r.case_number, e.what()));
+    }
+  }
+}
+
 }  // namespace
 
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
   const std::vector<format::CaseRecord> problems = read_problems(input);
+  validate_cases(problems);
   std::filesystem::path dir = options.output_dir.empty() ? input.parent_path() : options.output_dir;
   if (!options.output_dir.empty()) std::filesystem::create_directories(dir);
   const std::filesystem::path stem = dir / input.stem();

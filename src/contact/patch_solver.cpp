@@ -11,6 +11,7 @@
 
 #include "contact/force_iteration.hpp"
 #include "contact/patch_solver_impl.hpp"
+#include "contact/result_check.hpp"
 #include "elastic/material.hpp"
 #include "geometry/discretisation.hpp"
 #include "geometry/hertz.hpp"
@@ -18,6 +19,7 @@
 #include "physics/friction_law.hpp"
 #include "post/subsurface.hpp"
 #include "rollcontact/errors.hpp"
+#include "rollcontact/model/validation.hpp"
 #include "rollcontact/solve.hpp"
 #include "simplified/prescribed_pressure.hpp"
 #include "simplified/simplified_solver.hpp"
@@ -658,6 +660,7 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
 }  // namespace
 
 Solution PatchSolver::solve(const model::PatchProblem& problem) {
+  model::validate(problem);  // every front end's values pass the same check
   Impl& st = *impl_;
   const model::Bodies& b = problem.bodies;
 
@@ -675,6 +678,13 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
 
   if (!problem.subsurface.empty())
     sol.subsurface = post::compute_subsurface(problem.subsurface, problem.bodies, sol);
+  const std::string non_finite = first_non_finite(sol);
+  if (!non_finite.empty()) {
+    // Never reported as converged, and never the start of the next case.
+    sol.solver.converged = false;
+    sol.solver.message = "non-finite result (" + non_finite + ")";
+    return sol;
+  }
   // A problem that does not become the previous one leaves the stored state as it was.
   if (problem.sequence.becomes_previous || !st.previous) st.previous = sol;
   return sol;

@@ -10,6 +10,8 @@
 
 #include "elastic/influence.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -167,6 +169,14 @@ Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& materi
     }
     prev.swap(cur);
   }
+  // Element sizes far outside what the closed forms can represent (e.g. DX = 1e30 mm) overflow
+  // to inf or NaN: reject the grid here rather than report a NaN force later.
+  for (double v : kernel.data())
+    if (!std::isfinite(v)) {
+      throw GeometryError(
+          fmt::format("element size DX = {} mm, DY = {} mm overflows the influence coefficients",
+                      grid.dx, grid.dy));
+    }
   return kernel;
 }
 

@@ -6,6 +6,7 @@
 
 cmake_minimum_required(VERSION 3.25)
 
+set(allowed_model "model")
 set(allowed_core "core")
 set(allowed_grid "")
 set(allowed_physics "physics")
@@ -50,7 +51,7 @@ function(check_folder folder files)
   endforeach()
 endfunction()
 
-foreach(folder core grid physics elastic elastic/operators geometry normal tangential simplified post contact
+foreach(folder model core grid physics elastic elastic/operators geometry normal tangential simplified post contact
                format/text format/profiles format/inp format/toml format/report batch)
   file(GLOB files "${ROOT}/src/${folder}/*.hpp" "${ROOT}/src/${folder}/*.cpp")
   check_folder(${folder} "${files}")

@@ -247,7 +247,14 @@ class Table {
     return *n.as_array();
   }
   double to_real(const toml::node& n, const std::string& path) const {
-    if (n.is_floating_point()) return n.as_floating_point()->get();
+    if (n.is_floating_point()) {
+      // TOML has inf and nan literals; no rollcontact input may be either (CONTACT's .inp
+      // reader has no such numbers at all).
+      const double v = n.as_floating_point()->get();
+      if (!std::isfinite(v))
+        throw InputError(*file_, line_of(n), fmt::format("{}: {} is not a finite number", path, v));
+      return v;
+    }
     if (n.is_integer()) return static_cast<double>(n.as_integer()->get());
     type_error(n, path, "a number");
   }

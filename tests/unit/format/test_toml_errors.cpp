@@ -132,5 +132,22 @@ TEST(TomlCaseErrors, FirstCaseOverridesAreWarnings) {
   EXPECT_NE(problems[0].source.warnings[0].find("overridden"), std::string::npos);
 }
 
+// TOML has inf and nan literals: every one is an input error at its line, whatever the key
+// (issue 11: force_N = inf was solved, shear_modulus_MPa = inf gave a rigid body).
+TEST(TomlCaseErrors, NonFiniteNumbersAreRejectedAtTheirLine) {
+  const std::string base = minimal_case();
+  for (const char* bad : {"inf", "-inf", "nan", "+inf"}) {
+    std::string text = base;
+    text.replace(text.find("force_N = 100.0"), 15, std::string("force_N = ") + bad);
+    const std::string m = error_of(text);
+    EXPECT_NE(m.find("bad.toml:3:"), std::string::npos) << m;
+    EXPECT_NE(m.find("case[1].normal.force_N"), std::string::npos) << m;
+    EXPECT_NE(m.find("is not a finite number"), std::string::npos) << m;
+  }
+  const std::string m = error_of(minimal_case({}, "poisson = 0.28, shear_modulus_MPa = inf"));
+  EXPECT_NE(m.find("shear_modulus_MPa"), std::string::npos) << m;
+  EXPECT_NE(m.find("is not a finite number"), std::string::npos) << m;
+}
+
 }  // namespace
 }  // namespace rollcontact::format

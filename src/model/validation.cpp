@@ -1,0 +1,138 @@
+#include "rollcontact/model/validation.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rollcontact::model {
+
+namespace {
+
+// The limits of the .inp and TOML readers (spec/inp-format.md), so that all front ends agree.
+constexpr double kMinShearModulus = 1e-5;  // [N/mm²]
+
+[[noreturn]] void reject(std::string_view field, double value, std::string_view why) {
+  throw InvalidValueError(std::string(field), fmt::format(" = {}: {}", value, why));
+}
+
+void finite(std::string_view field, double v) {
+  if (!std::isfinite(v)) reject(field, v, "must be a finite number");
+}
+
+void finite_all(std::string_view field, const std::vector<double>& values) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!std::isfinite(values[i]))
+      reject(fmt::format("{}[{}]", field, i), values[i], "must be a finite number");
+}
+
+void at_least(std::string_view field, double v, double lo) {
+  if (!(std::isfinite(v) && v >= lo))
+    reject(field, v, fmt::format("must be a finite number of at least {}", lo));
+}
+
+void element_size(std::string_view field, double v) {
+  if (!(std::isfinite(v) && v >= kMinElementSize_mm && v <= kMaxElementSize_mm))
+    reject(field, v,
+           fmt::format("element size must lie in [{}, {}] mm", kMinElementSize_mm,
+                       kMaxElementSize_mm));
+}
+
+void positive(std::string_view field, double v) {
+  if (!(std::isfinite(v) && v > 0.0)) reject(field, v, "must be finite and positive");
+}
+
+void body(std::string_view name, const ElasticBody& b) {
+  const double nu = b.poisson_ratio;
+  if (!(std::isfinite(nu) && nu >= 0.0 && nu <= 0.5))
+    reject(fmt::format("bodies.{}.poisson_ratio", name), nu, "must lie in [0, 0.5]");
+  at_least(fmt::format("bodies.{}.shear_modulus_N_mm2", name), b.shear_modulus_N_mm2,
+           kMinShearModulus);
+}
+
+void potential_contact(const PotentialContact& pc) {
+  if (pc.mx < 1 || pc.my < 1)
+    throw InvalidValueError("potential.mx, my",
+                            fmt::format(" = {}, {}: need at least one element", pc.mx, pc.my));
+  for (std::size_t i = 0; i < pc.values.size(); ++i)
+    finite(fmt::format("potential.values[{}]", i), pc.values[i]);
+  // Forms 1 and 3 give the element size itself.
+  if (pc.ipotcn == 1 || pc.ipotcn == 3) {
+    element_size("potential.values[2] (DX)", pc.values[2]);
+    element_size("potential.values[3] (DY)", pc.values[3]);
+  }
+}
+
+void gap(const UndeformedDistance& g) {
+  finite_all("gap.coeffs", g.coeffs);
+  finite("gap.xm", g.xm);
+  finite("gap.rm", g.rm);
+  finite("gap.y1", g.y1);
+  finite("gap.dy1", g.dy1);
+  finite_all("gap.values", g.values);
+  finite_all("gap.planform", g.planform);
+  finite_all("gap.patch_factors", g.patch_factors);
+}
+
+void loading(const PatchProblem& p) {
+  if (p.normal.kind == NormalLoadKind::Force)
+    positive("normal.force_N", p.normal.force_N);
+  else
+    finite("normal.approach_mm", p.normal.approach_mm);
+  const TangentialLoading& t = p.tangential;
+  finite("tangential.creepage.longitudinal", t.creepage.longitudinal);
+  finite("tangential.creepage.lateral", t.creepage.lateral);
+  finite("tangential.creepage.spin_rad_per_mm", t.creepage.spin_rad_per_mm);
+  finite("tangential.force_x_over_mu_fn", t.force_x_over_mu_fn);
+  finite("tangential.force_y_over_mu_fn", t.force_y_over_mu_fn);
+  finite("tangential.spin_centre_x_mm", t.spin_centre_x_mm);
+  finite("tangential.spin_centre_y_mm", t.spin_centre_y_mm);
+  finite_all("tangential.extra_slip", t.extra_slip);
+  finite("rolling.direction_rad", p.rolling.direction_rad);
+  finite("rolling.spin_offset_factor", p.rolling.spin_offset_factor);
+  if (t.kind == TangentialKind::TransientRolling || t.kind == TangentialKind::SteadyRolling) {
+    positive("rolling.step_mm", p.rolling.step_mm);
+    positive("rolling.velocity_mm_per_s", p.rolling.velocity_mm_per_s);
+  }
+}
+
+void friction_and_solver(const PatchProblem& p) {
+  at_least("friction.static_coefficient", p.friction.static_coefficient, 0.0);
+  at_least("friction.kinetic_coefficient", p.friction.kinetic_coefficient, 0.0);
+  const SimplifiedParameters& s = p.bodies.simplified;
+  finite("bodies.simplified.flexibility_mm3_N", s.flexibility_mm3_N);
+  finite("bodies.simplified.k0", s.k0);
+  finite("bodies.simplified.alpha_inf", s.alpha_inf);
+  finite("bodies.simplified.beta", s.beta);
+  positive("solver.tolerance", p.solver.tolerance);
+  finite("solver.relaxation_adhesion", p.solver.relaxation_adhesion);
+  finite("solver.relaxation_slip", p.solver.relaxation_slip);
+}
+
+void subsurface(const std::vector<SubsurfaceBlock>& blocks) {
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const SubsurfaceBlock& s = blocks[b];
+    const std::string name = fmt::format("subsurface[{}]", b);
+    finite(name + ".zl", s.zl);
+    finite(name + ".dz", s.dz);
+    finite_all(name + ".x", s.x);
+    finite_all(name + ".y", s.y);
+    finite_all(name + ".z", s.z);
+  }
+}
+
+}  // namespace
+
+void validate(const PatchProblem& problem) {
+  potential_contact(problem.potential);
+  gap(problem.gap);
+  body("body1", problem.bodies.body1);
+  body("body2", problem.bodies.body2);
+  friction_and_solver(problem);
+  loading(problem);
+  subsurface(problem.subsurface);
+}
+
+}  // namespace rollcontact::model

@@ -1,0 +1,111 @@
+// The one admissibility check of a PatchProblem (model::validate), which every front end and
+// PatchSolver::solve run: each kind of inadmissible value is named by its field.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "rollcontact/model/validation.hpp"
+
+namespace rollcontact::model {
+namespace {
+
+PatchProblem valid_problem() {
+  PatchProblem p;
+  p.normal.kind = NormalLoadKind::Force;
+  p.normal.force_N = 1000.0;
+  p.potential.ipotcn = 1;
+  p.potential.mx = p.potential.my = 10;
+  p.potential.values = {-1.0, -1.0, 0.2, 0.2};
+  p.gap.coeffs = {0.002, 0.0, 0.004, 0.0, 0.0, 0.0};
+  return p;
+}
+
+/// The field named by the InvalidValueError that validate() throws ("" if it accepts).
+std::string rejected_field(const PatchProblem& p) {
+  try {
+    validate(p);
+  } catch (const InvalidValueError& e) {
+    EXPECT_EQ(e.code(), ErrorCode::Input);
+    return e.field();
+  }
+  return "";
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const double kNan = std::nan("");
+
+TEST(ModelValidation, AValidProblemPasses) {
+  EXPECT_EQ(rejected_field(valid_problem()), "");
+}
+
+TEST(ModelValidation, EveryNonFiniteOrOutOfRangeValueIsNamed) {
+  struct Case {
+    std::function<void(PatchProblem&)> spoil;
+    std::string field;
+  };
+  const std::vector<Case> cases = {
+      {[](PatchProblem& p) { p.normal.force_N = kInf; }, "normal.force_N"},
+      {[](PatchProblem& p) { p.normal.force_N = -1.0; }, "normal.force_N"},
+      {[](PatchProblem& p) {
+         p.normal.kind = NormalLoadKind::Approach;
+         p.normal.approach_mm = kNan;
+       },
+       "normal.approach_mm"},
+      {[](PatchProblem& p) { p.bodies.body1.shear_modulus_N_mm2 = kInf; },
+       "bodies.body1.shear_modulus_N_mm2"},
+      {[](PatchProblem& p) { p.bodies.body2.shear_modulus_N_mm2 = 0.0; },
+       "bodies.body2.shear_modulus_N_mm2"},
+      {[](PatchProblem& p) { p.bodies.body2.poisson_ratio = 0.6; }, "bodies.body2.poisson_ratio"},
+      {[](PatchProblem& p) { p.friction.static_coefficient = kNan; },
+       "friction.static_coefficient"},
+      {[](PatchProblem& p) { p.friction.kinetic_coefficient = -0.1; },
+       "friction.kinetic_coefficient"},
+      {[](PatchProblem& p) { p.potential.values[2] = 1e30; }, "potential.values[2] (DX)"},
+      {[](PatchProblem& p) { p.potential.values[3] = 1e-12; }, "potential.values[3] (DY)"},
+      {[](PatchProblem& p) { p.potential.values[0] = kNan; }, "potential.values[0]"},
+      {[](PatchProblem& p) { p.potential.mx = 0; }, "potential.mx, my"},
+      {[](PatchProblem& p) { p.gap.coeffs[2] = kInf; }, "gap.coeffs[2]"},
+      {[](PatchProblem& p) { p.tangential.creepage.lateral = kNan; },
+       "tangential.creepage.lateral"},
+      {[](PatchProblem& p) {
+         p.tangential.extra_slip = {0.0, kInf};
+       },
+       "tangential.extra_slip[1]"},
+      {[](PatchProblem& p) {
+         p.tangential.kind = TangentialKind::SteadyRolling;
+         p.rolling.step_mm = 0.0;
+       },
+       "rolling.step_mm"},
+      {[](PatchProblem& p) { p.solver.tolerance = kNan; }, "solver.tolerance"},
+      {[](PatchProblem& p) {
+         SubsurfaceBlock b;
+         b.z = {0.0, kInf};
+         p.subsurface.push_back(b);
+       },
+       "subsurface[0].z[1]"},
+  };
+  for (const Case& c : cases) {
+    PatchProblem p = valid_problem();
+    c.spoil(p);
+    EXPECT_EQ(rejected_field(p), c.field);
+  }
+}
+
+TEST(ModelValidation, MessageShowsTheValue) {
+  PatchProblem p = valid_problem();
+  p.normal.force_N = kInf;
+  try {
+    validate(p);
+    FAIL() << "accepted";
+  } catch (const InvalidValueError& e) {
+    EXPECT_EQ(std::string(e.what()), "normal.force_N = inf: must be finite and positive");
+  }
+}
+
+}  // namespace
+}  // namespace rollcontact::model
