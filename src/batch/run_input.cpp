@@ -160,12 +160,56 @@ void validate_cases(const std::vector<format::CaseRecord>& problems) {
 
 }  // namespace
 
+namespace {
+
+/// The output folder exists (created when missing), is a folder, and takes a file — checked
+/// before anything is solved, so that a wrong -o costs nothing and says why (exit 2).
+void prepare_output_dir(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  const fs::path shown = dir.empty() ? fs::path(".") : dir;
+  std::error_code ec;
+  if (fs::exists(shown, ec) && !fs::is_directory(shown, ec))
+    throw InputError(shown.string(), 0, "the output folder is an existing file, not a folder");
+  if (!dir.empty()) {
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(shown.string(), 0, "cannot create the output folder: " + ec.message());
+  }
+  try {
+    format::write_file_atomically(shown / ".rollcontact-write-test", "");
+  } catch (const Error&) {
+    throw InputError(shown.string(), 0, "cannot write to the output folder");
+  }
+  fs::remove(shown / ".rollcontact-write-test", ec);
+}
+
+/// An output never replaces the input (an input named x.out or x.json would be overwritten by
+/// the report of its own run).
+void refuse_overwriting_input(const std::filesystem::path& input,
+                              const std::filesystem::path& stem) {
+  namespace fs = std::filesystem;
+  for (const char* ext : {".out", ".json"}) {
+    fs::path out = stem;
+    out += ext;
+    std::error_code ec;
+    if (fs::exists(out, ec) && fs::equivalent(out, input, ec)) {
+      throw InputError(input.string(), 0,
+                       fmt::format("the output {} would replace this input; rename the input "
+                                   "(e.g. to .inp) or write elsewhere with -o DIR",
+                                   out.string()));
+    }
+  }
+}
+
+}  // namespace
+
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
   const std::vector<format::CaseRecord> problems = read_problems(input);
   validate_cases(problems);
-  std::filesystem::path dir = options.output_dir.empty() ? input.parent_path() : options.output_dir;
-  if (!options.output_dir.empty()) std::filesystem::create_directories(dir);
+  const std::filesystem::path dir =
+      options.output_dir.empty() ? input.parent_path() : options.output_dir;
   const std::filesystem::path stem = dir / input.stem();
+  refuse_overwriting_input(input, stem);
+  prepare_output_dir(dir);
   return run_problems(problems, input.filename().string(), stem, options);
 }
 

@@ -6,6 +6,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <set>
 #include <string>
 
 namespace {
@@ -77,6 +79,44 @@ TEST_F(CliExitStatus, ValidInputSucceedsAndWritesReport) {
   EXPECT_EQ(exit_status("run " + copy.string()), 0);
   EXPECT_TRUE(fs::exists(dir_ / "cattaneo.out"));
   EXPECT_TRUE(fs::exists(dir_ / "cattaneo.json"));
+}
+
+// Nothing of the user's is lost (issue 11): an input named like an output is refused before it is
+// read twice, and a wrong output folder is found before anything is solved.
+TEST_F(CliExitStatus, AnInputNamedLikeItsOutputIsRefusedAndKept) {
+  const fs::path source =
+      fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples" / "hertz_normal.inp";
+  for (const char* name : {"case.out", "case.json"}) {
+    const fs::path input = dir_ / name;
+    fs::copy_file(source, input, fs::copy_options::overwrite_existing);
+    EXPECT_EQ(exit_status("run " + input.string()), 2) << name;
+    EXPECT_EQ(fs::file_size(input), fs::file_size(source)) << name << " was overwritten";
+  }
+}
+
+TEST_F(CliExitStatus, AnUnusableOutputFolderIsTwoBeforeSolving) {
+  const fs::path source =
+      fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples" / "hertz_normal.inp";
+  const fs::path file = dir_ / "a_file";
+  std::ofstream(file) << "x";
+  EXPECT_EQ(exit_status("run -o " + file.string() + " " + source.string()), 2);
+  EXPECT_EQ(exit_status("run -o " + (file / "below").string() + " " + source.string()), 2);
+  EXPECT_EQ(exit_status("run -o /proc/rollcontact-out " + source.string()), 2);  // read-only
+  EXPECT_EQ(fs::file_size(file), 1u);
+}
+
+TEST_F(CliExitStatus, EveryRepositoryExampleWritesItsOwnOutputs) {
+  const fs::path examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
+  std::set<fs::path> stems;
+  int inputs = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(examples)) {
+    const fs::path& p = entry.path();
+    if (p.extension() != ".inp" && p.extension() != ".toml") continue;
+    ++inputs;
+    EXPECT_TRUE(stems.insert(p.parent_path() / p.stem()).second)
+        << p << " writes the same .out/.json as another example";
+  }
+  EXPECT_GE(inputs, 14);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Acceptance: a case solved from its .inp and from its TOML conversion gives identical totals;
-// `run` accepts .toml files; the examples/ folder holds matching .inp and .toml pairs.
+// `run` accepts .toml files; examples/toml/ holds the TOML twin of every examples/*.inp (in its
+// own folder, so that the two write different outputs).
 
 #include <gtest/gtest.h>
 
@@ -54,10 +55,9 @@ TEST(TomlAcceptance, RunDispatchesOnTomlExtension) {
 
 TEST(TomlAcceptance, ExamplePairsDescribeTheSameProblems) {
   int pairs = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(repo_examples)) {
+  for (const auto& entry : std::filesystem::directory_iterator(repo_examples / "toml")) {
     if (entry.path().extension() != ".toml") continue;
-    auto inp = entry.path();
-    inp.replace_extension(".inp");
+    const auto inp = repo_examples / entry.path().filename().replace_extension(".inp");
     SCOPED_TRACE(entry.path().string());
     ASSERT_TRUE(std::filesystem::exists(inp)) << "missing .inp twin";
     std::vector<format::CaseRecord> a;
