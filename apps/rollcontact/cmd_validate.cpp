@@ -128,6 +128,10 @@ int run_validation(const ValidateSettings& s) {
   }
   fmt::print("{}", batch::format_validation_table(results, batch::TableStyle::Text));
   fmt::print("{}", batch::format_case_reasons(results, batch::TableStyle::Text));
+  const int compared = batch::compared_cases(results);
+  fmt::print("compared {} case{} with the references of {} example{}{}\n", compared,
+             compared == 1 ? "" : "s", results.size(), results.size() == 1 ? "" : "s",
+             compared == 0 ? ": NOTHING COMPARED, which is a failure" : "");
   if (!s.markdown.empty())
     format::write_file_atomically(s.markdown, batch::format_validation_markdown(results, s.folder));
   return batch::any_failed(results) ? exit_case_failed : exit_ok;

@@ -88,7 +88,11 @@ ExampleResult validate_example(const ExampleFiles& example, const std::filesyste
 std::vector<ExampleResult> validate_folder(const std::filesystem::path& dir,
                                            const ValidationOptions& options);
 
-/// True when a supported case failed (the exit status of `rollcontact validate`).
+/// Cases compared with a reference (passed or failed) over all examples.
+int compared_cases(const std::vector<ExampleResult>& results);
+
+/// True when a supported case failed, an example could not be compared at all, or nothing was
+/// compared (the exit status of `rollcontact validate`).
 bool any_failed(const std::vector<ExampleResult>& results);
 
 }  // namespace rollcontact::batch

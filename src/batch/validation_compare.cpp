@@ -79,6 +79,16 @@ std::vector<CaseComparison> compare_reports(const format::Report& ours,
   out.reserve(reference.cases.size());
   for (const auto& ref : reference.cases)
     out.push_back(compare_case(ours.find(ref.number), ref, tolerances));
+  // A reference that stops early (truncated, or garbage after the first cases) must not pass
+  // by comparing fewer cases: every case we solved that it lacks is a failure.
+  for (const auto& case_ours : ours.cases)
+    if (reference.find(case_ours.number) == nullptr) {
+      CaseComparison missing;
+      missing.number = case_ours.number;
+      missing.status = CaseStatus::Failed;
+      missing.reason = "case missing from the reference report (truncated or unreadable there)";
+      out.push_back(std::move(missing));
+    }
   return out;
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -237,12 +238,63 @@ TEST(Validation, UnreadableInputMakesEveryCaseNotSupported) {
   ASSERT_EQ(r.cases.size(), 21u);
   if (r.run_error.empty()) GTEST_SKIP() << "module 1 is read now";
   for (const auto& c : r.cases) EXPECT_EQ(c.status, CaseStatus::NotSupported) << c.reason;
-  EXPECT_FALSE(any_failed(results));
+  EXPECT_EQ(r.count(CaseStatus::Failed), 0);
+  // Not a failed case, but a validation that compared nothing fails as a whole.
+  EXPECT_TRUE(any_failed(results));
 }
 
 TEST(Validation, EmptyFolderIsAnInputError) {
   const TemporaryFolder out;
   EXPECT_THROW(validate_folder(out.path(), ValidationOptions{}), InputError);
+}
+
+// Validation that cannot pass by accident (issue 11): a garbage reference, a truncated one and
+// a folder where nothing could be compared all fail.
+TEST(Validation, GarbageReferenceFailsWithItsReason) {
+  REQUIRE_EXAMPLES();
+  const TemporaryFolder tmp;
+  std::filesystem::copy_file(kExamples / "cattaneo.inp", tmp.path() / "cattaneo.inp");
+  std::ofstream(tmp.path() / "cattaneo.ref_out") << "this is not a CONTACT report\n";
+  ValidationOptions options;
+  options.output_dir = tmp.path() / "out";
+  const auto results = validate_folder(tmp.path(), options);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_NE(results[0].run_error.find("no case could be read"), std::string::npos)
+      << results[0].run_error;
+  EXPECT_EQ(compared_cases(results), 0);
+  EXPECT_TRUE(any_failed(results));
+}
+
+TEST(Validation, TruncatedReferenceFailsTheCasesItLacks) {
+  REQUIRE_EXAMPLES();
+  const TemporaryFolder tmp;
+  std::filesystem::copy_file(kExamples / "cattaneo.inp", tmp.path() / "cattaneo.inp");
+  {  // the reference up to (not including) its case 2
+    std::ifstream in(kExamples / "cattaneo.ref_out");
+    std::ofstream out(tmp.path() / "cattaneo.ref_out");
+    std::string line;
+    while (std::getline(in, line) && line.find("Case     2") == std::string::npos)
+      out << line << '\n';
+  }
+  ValidationOptions options;
+  options.output_dir = tmp.path() / "out";
+  const auto results = validate_folder(tmp.path(), options);
+  ASSERT_EQ(results.size(), 1u);
+  ASSERT_EQ(results[0].cases.size(), 2u);
+  EXPECT_EQ(results[0].cases[0].status, CaseStatus::Passed);
+  EXPECT_EQ(results[0].cases[1].number, 2);
+  EXPECT_EQ(results[0].cases[1].status, CaseStatus::Failed);
+  EXPECT_TRUE(any_failed(results));
+}
+
+TEST(Validation, NothingComparedIsAFailure) {
+  ExampleResult only_not_supported;
+  only_not_supported.cases.push_back({1, CaseStatus::NotSupported, "module 1", {}});
+  EXPECT_EQ(compared_cases({only_not_supported}), 0);
+  EXPECT_TRUE(any_failed({only_not_supported}));
+  ExampleResult passed;
+  passed.cases.push_back({1, CaseStatus::Passed, "", {}});
+  EXPECT_FALSE(any_failed({only_not_supported, passed}));
 }
 
 }  // namespace
