@@ -9,6 +9,7 @@
 #include "format/inp/inp_module1.hpp"
 #include "format/inp/inp_module3.hpp"
 #include "format/text/inp_stream.hpp"
+#include "format/text/input_file.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -93,11 +94,8 @@ std::vector<InputCase> read_input_string(const std::string& text, const std::str
 
 std::vector<InputCase> read_input_cases(const std::filesystem::path& path,
                                         const InpReadOptions& options) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path.string(), 0, "cannot open input file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return read_input_string(text.str(), path.string(), path.parent_path(), options);
+  return read_input_string(read_input_file(path, "input file"), path.string(), path.parent_path(),
+                           options);
 }
 
 std::vector<CaseRecord> read_inp_string(const std::string& text, const std::string& name,
@@ -125,11 +123,8 @@ std::vector<CaseRecord> read_inp_string(const std::string& text, const std::stri
 
 std::vector<CaseRecord> read_inp_file(const std::filesystem::path& path,
                                       const InpReadOptions& options) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path.string(), 0, "cannot open input file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return read_inp_string(text.str(), path.string(), path.parent_path(), options);
+  return read_inp_string(read_input_file(path, "input file"), path.string(), path.parent_path(),
+                         options);
 }
 
 std::vector<CaseRecord> read_inp_file(const std::filesystem::path& path) {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "format/text/inp_lexer.hpp"
+#include "format/text/input_file.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -65,11 +66,7 @@ bool parse_number_row(std::string_view line, std::vector<double>& values, std::s
 }
 
 std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path.string(), 0, "cannot open profile file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
+  return read_input_file(path, "profile file");
 }
 
 }  // namespace rollcontact::format

@@ -10,8 +10,10 @@
 #include <fstream>
 #include <istream>
 #include <limits>
+#include <sstream>
 #include <utility>
 
+#include "format/text/input_file.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -255,8 +257,7 @@ Report parse_report(std::istream& in) {
 }
 
 Report parse_report_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw Error("cannot open report " + path.string());
+  std::istringstream in(read_input_file(path, "report"));
   return parse_report(in);
 }
 

@@ -63,7 +63,25 @@ bool parse_into(const InpWord& word, FieldKind kind, GroupValues::Item& item) {
 
 }  // namespace
 
+namespace {
+
+/// A UTF-8 byte-order mark (editors on Windows write one): not part of the input.
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+
+/// Column (1-based) of the first character past CONTACT's 256 that would be lost: text beyond
+/// column 256 that is neither blank nor inside a comment begun before it. 0 when nothing is lost.
+std::size_t lost_text_column(std::string_view line) {
+  if (line.size() <= kInpLineLength) return 0;
+  const std::string_view kept = line.substr(0, kInpLineLength);
+  if (significant_text(kept).size() < kept.size()) return 0;  // a comment runs past the limit
+  const std::size_t k = line.find_first_not_of(" \t\r", kInpLineLength);
+  return k == std::string_view::npos ? 0 : k + 1;
+}
+
+}  // namespace
+
 InpStream::InpStream(std::string_view text, std::string file_name) : file_(std::move(file_name)) {
+  if (text.starts_with(kByteOrderMark)) text.remove_prefix(kByteOrderMark.size());
   std::size_t start = 0;
   while (start < text.size()) {
     const std::size_t end = text.find('\n', start);
@@ -74,9 +92,27 @@ InpStream::InpStream(std::string_view text, std::string file_name) : file_(std::
     lines_.emplace_back(text.substr(start, end - start));
     start = end + 1;
   }
+  // CONTACT reads 256 characters of a line; text after them would vanish without a trace and
+  // shift every value that follows, so it is an error here, at its line and column.
+  for (std::size_t i = 0; i < lines_.size(); ++i)
+    if (const std::size_t column = lost_text_column(lines_[i]); column > 0) {
+      fail(static_cast<int>(i) + 1,
+           "text from column " + std::to_string(column) +
+               " would be ignored: CONTACT reads only the first 256 characters of a line (split "
+               "the values over two lines, or start a comment with %)",
+           lines_[i].substr(column - 1, 20));
+    }
 }
 
 void InpStream::fail(int line, std::string message, std::string offending) const {
+  // A group that took values from a later line, shortly before the error: the likely cause is
+  // a value missing on its first line, which shifted everything after it.
+  if (spanned_.first_line > 0 && spanned_.first_line < line &&
+      line <= spanned_.last_line + kSpannedHintLines) {
+    message += "; note: " + spanned_.what + " on line " + std::to_string(spanned_.first_line) +
+               " took values from line " + std::to_string(spanned_.last_line) +
+               " — is a value missing on line " + std::to_string(spanned_.first_line) + "?";
+  }
   throw InputError(file_, line, std::move(message), std::move(offending));
 }
 
@@ -105,6 +141,7 @@ GroupValues InpStream::read_group(std::initializer_list<FieldSpec> fields, std::
   std::vector<GroupValues::Item> items(spec.size());
 
   std::size_t field = 0;
+  int first_line = 0;
   while (field < n_mandatory) {
     if (!skip_to_content()) {
       fail(line_count(), "end of file while reading " + std::string(what) + " (" +
@@ -114,6 +151,7 @@ GroupValues InpStream::read_group(std::initializer_list<FieldSpec> fields, std::
     const auto split = split_words(significant_text(lines_[next_]), kGroupWordLimit);
     ++next_;
     last_line_ = line;
+    if (first_line == 0) first_line = line;
     if (split.unterminated_quote) {
       fail(line, "unterminated quoted string in " + std::string(what), split.words.back().text);
     }
@@ -143,6 +181,10 @@ GroupValues InpStream::read_group(std::initializer_list<FieldSpec> fields, std::
       }
     }
   }
+  // The earliest span within the hint window is the one a shifted value starts from.
+  if (last_line_ > first_line &&
+      (spanned_.first_line == 0 || first_line > spanned_.last_line + kSpannedHintLines))
+    spanned_ = {first_line, last_line_, std::string(what)};
   return GroupValues(std::move(items));
 }
 

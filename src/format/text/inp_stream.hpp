@@ -89,6 +89,15 @@ class InpStream {
   std::vector<std::string> lines_;
   std::size_t next_ = 0;  ///< index of the next unread line
   int last_line_ = 0;
+  /// The last group whose values continued onto a later line (list-directed input allows it):
+  /// a value missing on its first line shifts every value after it, and the error surfaces
+  /// lines later, so the messages of errors shortly after it point back at it.
+  struct SpannedGroup {
+    int first_line = 0, last_line = 0;
+    std::string what;
+  } spanned_;
+  /// Errors up to this many lines after a spanned group mention it.
+  static constexpr int kSpannedHintLines = 5;
 };
 
 }  // namespace rollcontact::format

@@ -12,6 +12,7 @@
 
 #include "format/inp/grid_extent.hpp"
 #include "format/inp/reader_checks.hpp"
+#include "format/text/input_file.hpp"
 #include "format/toml/toml_sections.hpp"
 #include "format/toml/toml_table.hpp"
 #include "rollcontact/errors.hpp"
@@ -136,11 +137,8 @@ std::vector<CaseRecord> read_toml_string(const std::string& text, const std::str
 
 std::vector<CaseRecord> read_toml_file(const std::filesystem::path& path,
                                        const TomlReadOptions& options) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path.string(), 0, "cannot open input file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return read_toml_string(text.str(), path.string(), path.parent_path(), options);
+  return read_toml_string(read_input_file(path, "input file"), path.string(), path.parent_path(),
+                          options);
 }
 
 }  // namespace rollcontact::format

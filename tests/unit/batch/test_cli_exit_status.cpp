@@ -119,4 +119,10 @@ TEST_F(CliExitStatus, EveryRepositoryExampleWritesItsOwnOutputs) {
   EXPECT_GE(inputs, 14);
 }
 
+TEST_F(CliExitStatus, DevicesAreRefusedAtOnce) {
+  // Used to grow to 1.9 GB in 4 s and never end.
+  EXPECT_EQ(exit_status("run /dev/zero"), 2);
+  EXPECT_EQ(exit_status("run /dev/urandom"), 2);
+}
+
 }  // namespace
