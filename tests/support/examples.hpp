@@ -12,8 +12,12 @@ inline const std::filesystem::path kExamples = ROLLCONTACT_EXAMPLES_DIR;
 
 }  // namespace rollcontact::test_support
 
-#define REQUIRE_EXAMPLES()                                                                 \
-  if (!std::filesystem::is_directory(::rollcontact::test_support::kExamples)) {            \
-    GTEST_SKIP() << "example folder not found: " << ::rollcontact::test_support::kExamples \
-                 << " (CONTACT's examples, ../shared/reference/contact-examples)";         \
+/// Skips the current test, saying why and how to run it, when CONTACT's example folder is absent.
+#define REQUIRE_EXAMPLES()                                                                    \
+  if (!std::filesystem::is_directory(::rollcontact::test_support::kExamples)) {               \
+    GTEST_SKIP() << "CONTACT's example folder is absent ("                                    \
+                 << ::rollcontact::test_support::kExamples                                    \
+                 << "): this reference test is skipped. To run it, place CONTACT's examples " \
+                    "(reference/contact-examples: .inp inputs and .ref_out reports) at that " \
+                    "path, next to the repository.";                                          \
   }
