@@ -8,6 +8,7 @@
 #include <string>
 
 #include "batch/run_input.hpp"
+#include "batch/temporary_folder.hpp"
 #include "commands.hpp"
 #include "format/inp/builtin_example.hpp"
 #include "format/report/report_writer.hpp"
@@ -103,15 +104,18 @@ CommandRunner add_run_command(CLI::App& app) {
 
 CommandRunner add_example_command(CLI::App& app) {
   auto settings = std::make_shared<RunSettings>();
-  settings->output_dir = "rollcontact-example";
   auto* cmd = app.add_subcommand(
       "example", "Write the built-in example (wheel on rail, 80 kN) as example.inp and solve it");
-  cmd->add_option("-o,--output-dir", settings->output_dir, "folder for example.inp and outputs")
-      ->capture_default_str();
+  cmd->add_option("-o,--output-dir", settings->output_dir,
+                  "folder for example.inp and outputs (default: a new temporary folder)");
   add_solver_options(cmd, *settings);
   return [settings] {
-    std::filesystem::create_directories(settings->output_dir);
-    const auto path = std::filesystem::path(settings->output_dir) / "example.inp";
+    // Nothing is left in the working directory unless asked for.
+    const std::filesystem::path dir = settings->output_dir.empty()
+                                          ? batch::new_temporary_folder("rollcontact-example")
+                                          : std::filesystem::path(settings->output_dir);
+    std::filesystem::create_directories(dir);
+    const auto path = dir / "example.inp";
     format::write_file_atomically(path, std::string(format::builtin_example_inp));
     if (!settings->quiet) fmt::print("built-in example: {}\n", path.string());
     RunSettings local = *settings;

@@ -5,10 +5,10 @@
 #include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
-#include <random>
 
 #include "batch/parallel.hpp"
 #include "batch/run_input.hpp"
+#include "batch/temporary_folder.hpp"
 #include "format/report/report_parser.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -34,17 +34,6 @@ WorstDifference ExampleResult::worst() const {
 namespace {
 
 /// A new, empty folder under the system's temporary directory.
-std::filesystem::path make_temporary_dir() {
-  std::random_device seed;
-  std::mt19937_64 random(seed());
-  const auto base = std::filesystem::temp_directory_path();
-  for (int attempt = 0; attempt < 100; ++attempt) {
-    auto dir = base / ("rollcontact-validate-" + std::to_string(random() % 1000000000ULL));
-    if (std::filesystem::create_directory(dir)) return dir;
-  }
-  throw Error("cannot create a temporary folder in " + base.string());
-}
-
 /// Every case of the reference with the same status and reason (our run produced no report).
 void mark_all(ExampleResult& result, const format::Report& reference, CaseStatus status,
               const std::string& reason) {
@@ -165,7 +154,8 @@ std::vector<ExampleResult> validate_folder(const std::filesystem::path& dir,
     throw InputError(dir.string(), 0, "no .inp file with a matching .ref_out reference report");
 
   const bool temporary = options.output_dir.empty();
-  const auto output_dir = temporary ? make_temporary_dir() : options.output_dir;
+  const auto output_dir =
+      temporary ? new_temporary_folder("rollcontact-validate") : options.output_dir;
 
   std::vector<ExampleResult> results(examples.size());
   std::mutex report_mutex;  // serialises on_example and the bookkeeping of finished examples

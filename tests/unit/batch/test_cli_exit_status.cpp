@@ -125,4 +125,16 @@ TEST_F(CliExitStatus, DevicesAreRefusedAtOnce) {
   EXPECT_EQ(exit_status("run /dev/urandom"), 2);
 }
 
+TEST_F(CliExitStatus, ExampleLeavesNothingInTheWorkingDirectory) {
+  EXPECT_EQ(exit_status("example -q --output-dir " + (dir_ / "named").string()), 0);
+  EXPECT_TRUE(fs::exists(dir_ / "named" / "example.inp"));
+  EXPECT_TRUE(fs::exists(dir_ / "named" / "example.out"));
+  const fs::path cwd = dir_ / "cwd";
+  fs::create_directories(cwd);
+  const std::string command =
+      "cd " + cwd.string() + " && " + std::string(ROLLCONTACT_CLI) + " example -q >/dev/null 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0);
+  EXPECT_TRUE(fs::is_empty(cwd)) << "example wrote into the working directory";
+}
+
 }  // namespace
