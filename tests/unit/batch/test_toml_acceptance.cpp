@@ -14,6 +14,7 @@
 #include "format/toml/toml_case_writer.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/solve.hpp"
+#include "support/examples.hpp"
 #include "support/problem_compare.hpp"
 
 namespace rollcontact::batch {
@@ -24,6 +25,7 @@ const std::filesystem::path repo_examples =
     std::filesystem::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
 
 TEST(TomlAcceptance, CattaneoCase1SolvesIdenticallyFromTomlAndInp) {
+  REQUIRE_EXAMPLES();
   const auto from_inp = format::read_inp_file(examples_dir / "cattaneo.inp");
   const auto from_toml =
       format::read_toml_string(format::write_toml_string(from_inp), "cattaneo.toml");
@@ -41,6 +43,7 @@ TEST(TomlAcceptance, CattaneoCase1SolvesIdenticallyFromTomlAndInp) {
 }
 
 TEST(TomlAcceptance, RunDispatchesOnTomlExtension) {
+  REQUIRE_EXAMPLES();
   const auto dir = std::filesystem::temp_directory_path() / "rollcontact_toml_run_test";
   std::filesystem::create_directories(dir);
   const auto problems = format::read_inp_file(examples_dir / "cattaneo.inp");

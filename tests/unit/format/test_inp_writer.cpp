@@ -9,6 +9,7 @@
 
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/inp_writer.hpp"
+#include "support/examples.hpp"
 #include "support/problem_compare.hpp"
 
 namespace rollcontact::format {
@@ -19,6 +20,7 @@ const std::filesystem::path examples_dir{ROLLCONTACT_EXAMPLES_DIR};
 class InpWriterRoundTrip : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(InpWriterRoundTrip, WrittenInpReadsBackToSameProblems) {
+  REQUIRE_EXAMPLES();
   const std::vector<format::CaseRecord> original =
       read_inp_file(examples_dir / (GetParam() + ".inp"));
   const std::string text = write_inp_string(original, examples_dir);

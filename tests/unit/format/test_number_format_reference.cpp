@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "format/report/number_format.hpp"
+#include "support/examples.hpp"
 
 namespace rollcontact::format {
 namespace {
@@ -68,6 +69,7 @@ bool numeric(const std::string& s, std::size_t pos, std::size_t n) {
 }
 
 TEST(NumberFormatReference, ModuleThreeReportsRoundTrip) {
+  REQUIRE_EXAMPLES();
   const Formatter sig = [](double v) { return fmt_sig(12, 4, 4, v); };
   const Formatter sig6 = [](double v) { return fmt_sig(12, 6, 4, v); };
   const Formatter sig3 = [](double v) { return fmt_sig(12, 3, 3, v); };

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "format/report/report_writer.hpp"
+#include "support/examples.hpp"
 
 namespace rollcontact::format {
 namespace {
@@ -218,6 +219,7 @@ void fields_from_table(const std::vector<std::string>& ref, double mu, Solution&
 }
 
 TEST(ReportCattaneo, CaseOneNormalHertz) {
+  REQUIRE_EXAMPLES();
   const auto ref = reference_case("cattaneo", 1);
   ASSERT_GT(ref.size(), 50u);
   const format::CaseRecord p = cattaneo_problem(1);
@@ -227,6 +229,7 @@ TEST(ReportCattaneo, CaseOneNormalHertz) {
 }
 
 TEST(ReportCattaneo, CaseTwoShiftWithElementTable) {
+  REQUIRE_EXAMPLES();
   auto ref = reference_case("cattaneo", 2);
   ASSERT_GT(ref.size(), 200u);
   const format::CaseRecord p = cattaneo_problem(2);

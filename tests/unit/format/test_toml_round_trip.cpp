@@ -12,6 +12,7 @@
 #include "format/toml/toml_case_reader.hpp"
 #include "format/toml/toml_case_writer.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/examples.hpp"
 #include "support/problem_compare.hpp"
 
 namespace rollcontact::format {
@@ -28,6 +29,7 @@ const std::vector<std::string> module3_examples{
 class TomlRoundTrip : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(TomlRoundTrip, InpToTomlGivesSameProblems) {
+  REQUIRE_EXAMPLES();
   const auto path = examples_dir / (GetParam() + ".inp");
   const std::vector<format::CaseRecord> from_inp = read_inp_file(path);
   ASSERT_FALSE(from_inp.empty());
@@ -44,6 +46,7 @@ INSTANTIATE_TEST_SUITE_P(Module3Examples, TomlRoundTrip, ::testing::ValuesIn(mod
                          [](const auto& param_info) { return param_info.param; });
 
 TEST(TomlRoundTrip, Module1ExamplesAreNotSupportedYet) {
+  REQUIRE_EXAMPLES();
   for (const char* name : {"mbench_a22_kpec", "mbench_a22_left", "mbench_a22_right",
                            "mbench_a22_varfric", "wheelflat"}) {
     try {
@@ -56,6 +59,7 @@ TEST(TomlRoundTrip, Module1ExamplesAreNotSupportedYet) {
 }
 
 TEST(TomlRoundTrip, ExamplesCoverEveryFeatureOnce) {
+  REQUIRE_EXAMPLES();
   // Sanity check of the test itself: the examples exercise shifts, rolling, subsurface points,
   // temperature and several friction laws, so the round trips above are not only Hertz cases.
   std::set<int> t, s, h, l, m;

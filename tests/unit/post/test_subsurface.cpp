@@ -12,6 +12,7 @@
 #include "post/subsurface_points.hpp"
 #include "rollcontact/model/patch_problem.hpp"
 #include "subs_table.hpp"
+#include "support/examples.hpp"
 
 namespace rollcontact::post {
 namespace {
@@ -81,6 +82,7 @@ TEST(Subsurface, UnitPressureMaximaMatchSubsurfCase1) {
 constexpr double kAbsoluteTolerance = 5e-6;
 
 TEST(Subsurface, ReproducesSubsurfRefSubsTable) {
+  REQUIRE_EXAMPLES();
   const std::vector<RefBlock> ref =
       read_subs(std::string(ROLLCONTACT_EXAMPLES_DIR) + "/subsurf.ref_subs");
   ASSERT_EQ(ref.size(), 2u);
