@@ -18,6 +18,15 @@ if(ROLLCONTACT_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
+if(ROLLCONTACT_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "ROLLCONTACT_FUZZ needs clang (libFuzzer): use the preset `fuzz`")
+  endif()
+  # Coverage instrumentation for every library; the harnesses link libFuzzer's main.
+  add_compile_options(-fsanitize=fuzzer-no-link)
+  add_link_options(-fsanitize=fuzzer-no-link)
+endif()
+
 # rollcontact_add_module(<folder> DEPS <libs...>): one static library per src/ folder, so the
 # layering of ARCHITECTURE.md is enforced by the linker (grid <- elastic <- normal, ...).
 function(rollcontact_add_module name)

@@ -2,7 +2,7 @@
 # Installs the build and test dependencies from Debian packages. Idempotent; needs root
 # (or sudo) only when something is missing.
 set -euo pipefail
-packages=(build-essential cmake pkg-config git clang-format
+packages=(build-essential cmake pkg-config git clang-format clang libclang-rt-14-dev
           libfftw3-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev
           libtomlplusplus-dev libgtest-dev libgmock-dev libbenchmark-dev)
 missing=()

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <charconv>
 #include <climits>
+#include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <system_error>
 
@@ -123,6 +125,14 @@ std::optional<double> parse_fortran_real(std::string_view word) {
   const char* first = normalised.data();
   const char* last = first + normalised.size();
   const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec == std::errc::result_out_of_range && ptr == last) {
+    // Underflow (1e-400) reads as zero or a subnormal, as Fortran's READ gives it; overflow
+    // (1e999) has no finite value and stays an error. strtod tells the two apart (the C locale
+    // is never changed by rollcontact, so '.' is its decimal point).
+    const double v = std::strtod(normalised.c_str(), nullptr);
+    if (std::isfinite(v)) return v;
+    return std::nullopt;
+  }
   if (ec != std::errc{} || ptr != last) return std::nullopt;
   return value;
 }

@@ -1,5 +1,6 @@
 #include "format/text/inp_stream.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 
@@ -9,6 +10,9 @@
 namespace rollcontact::format {
 
 namespace {
+
+/// Values reserved before an array is read; more as they come.
+constexpr std::size_t kInitialReserve = 4096;
 
 std::string_view kind_name(FieldKind kind) {
   switch (kind) {
@@ -214,22 +218,25 @@ void InpStream::fill_array(std::size_t n, std::string_view what, std::string_vie
 
 std::vector<double> InpStream::read_reals(std::size_t n, std::string_view what,
                                           const std::function<bool(std::size_t)>& is_angle) {
-  std::vector<double> values(n);
+  // Grown as values arrive: a short file that announces two million values costs nothing.
+  std::vector<double> values;
+  values.reserve(std::min<std::size_t>(n, kInitialReserve));
   fill_array(n, what, "a real number", [&](std::size_t k, const std::string& word) {
     const auto v = (is_angle && is_angle(k)) ? parse_angle(word) : parse_fortran_real(word);
     if (!v) return false;
-    values[k] = *v;
+    values.push_back(*v);
     return true;
   });
   return values;
 }
 
 std::vector<int> InpStream::read_integers(std::size_t n, std::string_view what) {
-  std::vector<int> values(n);
-  fill_array(n, what, "an integer", [&](std::size_t k, const std::string& word) {
+  std::vector<int> values;
+  values.reserve(std::min<std::size_t>(n, kInitialReserve));
+  fill_array(n, what, "an integer", [&](std::size_t, const std::string& word) {
     const auto v = parse_fortran_integer(word);
     if (!v) return false;
-    values[k] = *v;
+    values.push_back(*v);
     return true;
   });
   return values;

@@ -319,5 +319,16 @@ TEST(InpStreamLines, WindowsLineEndingsAndMissingFinalNewline) {
   EXPECT_EQ(in.line_count(), 3);
 }
 
+// Fortran's READ gives an underflowing real as zero (or a subnormal); an overflowing one has no
+// finite value. Neither inf nor nan is a Fortran number.
+TEST(InpLexer, UnderflowReadsAsZeroOverflowAndNonNumbersAreRejected) {
+  EXPECT_EQ(parse_fortran_real("1e-400"), 0.0);
+  EXPECT_EQ(parse_fortran_real("-1.0d-999"), 0.0);
+  EXPECT_TRUE(std::signbit(*parse_fortran_real("-1.0d-999")));
+  EXPECT_GT(*parse_fortran_real("1e-310"), 0.0);  // subnormal, kept
+  for (const char* bad : {"1e999", "-1.0D400", "inf", "nan", "Infinity", "0x1p3"})
+    EXPECT_FALSE(parse_fortran_real(bad).has_value()) << bad;
+}
+
 }  // namespace
 }  // namespace rollcontact::format
