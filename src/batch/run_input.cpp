@@ -203,12 +203,12 @@ void refuse_overwriting_input(const std::filesystem::path& input,
 }  // namespace
 
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
-  const std::vector<format::CaseRecord> problems = read_problems(input);
-  validate_cases(problems);
   const std::filesystem::path dir =
       options.output_dir.empty() ? input.parent_path() : options.output_dir;
   const std::filesystem::path stem = dir / input.stem();
   refuse_overwriting_input(input, stem);
+  const std::vector<format::CaseRecord> problems = read_problems(input);
+  validate_cases(problems);
   prepare_output_dir(dir);
   return run_problems(problems, input.filename().string(), stem, options);
 }
