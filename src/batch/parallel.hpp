@@ -21,17 +21,18 @@ struct ParallelOptions {
   Schedule schedule = Schedule::Dynamic;
 };
 
+/// Worker threads for a request: `requested` when positive, else the machine's hardware threads
+/// (at least 1).
+int default_thread_count(int requested);
+
 /// Runs body(worker, index) for every index in [0, n). With one worker and no progress
 /// callback everything runs on the calling thread. `progress(done)`, when given, is called on
 /// the calling thread about every 0.2 s and once at the end with the number of indices
 /// finished, while the workers run; the workers never wait for it.
 ///
 /// A worker that throws stops; the others finish their indices. Afterwards the exception of
-/// the lowest index is rethrown (deterministic whatever the timing).
-/// Worker threads for a request: `requested` when positive, else the machine's hardware threads
-/// (at least 1).
-int default_thread_count(int requested);
-
+/// the lowest index is rethrown (deterministic whatever the timing). With a progress callback
+/// even one worker runs on a thread of its own, so that the caller can report.
 void parallel_for(std::size_t n, const ParallelOptions& options,
                   const std::function<void(std::size_t worker, std::size_t index)>& body,
                   const std::function<void(std::size_t done)>& progress = {});
