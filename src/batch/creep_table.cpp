@@ -187,9 +187,7 @@ std::vector<TableRow> run_table(std::span<const TableCase> cases, const TableSet
   if (n == 0) return rows;
   // One PatchSolver per worker; cyclic order: neighbouring cases (same ellipse, same grid) on
   // different workers, so every worker keeps its cached operators for 644 cases in a row.
-  const std::size_t nworkers =
-      std::clamp<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), 1, n);
-  std::vector<PatchSolver> solvers(nworkers);
+  std::vector<PatchSolver> solvers(worker_count(n, threads));
   parallel_for(
       n, {threads, Schedule::Cyclic},
       [&](std::size_t worker, std::size_t i) {

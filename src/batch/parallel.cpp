@@ -28,12 +28,16 @@ int default_thread_count(int requested) {
   return hw > 0 ? static_cast<int>(hw) : 1;
 }
 
+std::size_t worker_count(std::size_t n, int threads) {
+  return std::clamp<std::size_t>(threads < 1 ? 1 : static_cast<std::size_t>(threads), 1,
+                                 std::max<std::size_t>(n, 1));
+}
+
 void parallel_for(std::size_t n, const ParallelOptions& options,
                   const std::function<void(std::size_t worker, std::size_t index)>& body,
                   const std::function<void(std::size_t done)>& progress) {
   if (n == 0) return;
-  const std::size_t workers = std::clamp<std::size_t>(
-      options.threads < 1 ? 1 : static_cast<std::size_t>(options.threads), 1, n);
+  const std::size_t workers = worker_count(n, options.threads);
   std::atomic<std::size_t> next{0}, done{0}, finished{0};
   std::vector<Failure> failures(workers);
   std::mutex mutex;

@@ -25,6 +25,10 @@ struct ParallelOptions {
 /// (at least 1).
 int default_thread_count(int requested);
 
+/// The workers parallel_for uses for n indices: `threads` clamped to [1, n] (1 for n = 0), so that
+/// callers can size their per-worker state.
+std::size_t worker_count(std::size_t n, int threads);
+
 /// Runs body(worker, index) for every index in [0, n). With one worker and no progress
 /// callback everything runs on the calling thread. `progress(done)`, when given, is called on
 /// the calling thread about every 0.2 s and once at the end with the number of indices

@@ -21,9 +21,9 @@ NormalOperators& OperatorCache::normal(const Grid& grid, const CombinedMaterial&
 TangentialOperators& OperatorCache::tangential(const Grid& grid, const CombinedMaterial& material,
                                                model::TangentialKind kind, double shift_x_mm,
                                                double shift_y_mm) {
-  if (kind == model::TangentialKind::Shift) shift_x_mm = shift_y_mm = 0.0;
-  if (kind == model::TangentialKind::None) kind = model::TangentialKind::SteadyRolling;
-  const OperatorKey key{grid, material, kind, shift_x_mm, shift_y_mm};
+  const ops::TangentialLoadingKey loading =
+      ops::tangential_loading_key(kind, shift_x_mm, shift_y_mm);
+  const OperatorKey key{grid, material, loading.kind, loading.shift_x, loading.shift_y};
   return tangential_.get(key, case_number_, [&](TangentialOperators& e) {
     ops::assemble_tangential(e, grid, material, kind, shift_x_mm, shift_y_mm, fft_);
     e.preconditioner = std::make_unique<tangential::TangentialPreconditioner>(e.c_xx, e.c_xy,

@@ -134,7 +134,7 @@ Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& materi
   }
   const int mx = grid.mx, my = grid.my;
   Kernel kernel(mx, my);
-  if (is_coupling(c) && std::abs(material.k) < kCouplingThreshold) return kernel;
+  if (is_coupling(c) && !is_coupled(material)) return kernel;
 
   const BaseComponent b = base_of(c);
   const Real dx = grid.dx, dy = grid.dy;

@@ -2,13 +2,10 @@
 
 #include "geometry/discretisation.hpp"
 
-#include <fmt/format.h>
-
 #include <cmath>
 #include <string>
 
 #include "rollcontact/errors.hpp"
-#include "rollcontact/model/validation.hpp"
 
 namespace rollcontact::geometry {
 
@@ -44,20 +41,6 @@ Discretisation build(const model::PatchProblem& problem, const CombinedMaterial&
     }
   }
   return d;
-}
-
-/// Element sizes outside [1e-8, 1e8] mm: the influence coefficients (∝ size/G) and the
-/// pressures they imply leave the range the products and the single-precision preconditioner
-/// represent; such a grid gives NaN forces, so it is refused before solving.
-void check_element_size(const Grid& g) {
-  for (const double size : {g.dx, g.dy})
-    if (!(std::isfinite(size) && size >= model::kMinElementSize_mm &&
-          size <= model::kMaxElementSize_mm)) {
-      throw ProblemError(
-          fmt::format("element size DX = {} mm, DY = {} mm lies outside [{}, {}] mm: the influence "
-                      "coefficients would over- or underflow",
-                      g.dx, g.dy, model::kMinElementSize_mm, model::kMaxElementSize_mm));
-    }
 }
 
 }  // namespace
@@ -111,9 +94,7 @@ HertzReport hertz_for_potential(const PotentialContact& pot, HertzLoad load, dou
 Discretisation build_discretisation(const model::PatchProblem& problem,
                                     const CombinedMaterial& material) {
   try {
-    Discretisation d = build(problem, material);
-    check_element_size(d.grid);
-    return d;
+    return build(problem, material);
   } catch (const ProblemError& e) {
     // The front end adds where the case came from (it knows the file and the case number).
     throw GeometryError(e.what());

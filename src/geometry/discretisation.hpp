@@ -6,6 +6,7 @@
 
 #include "geometry/hertz.hpp"
 #include "rollcontact/model/patch_problem.hpp"
+#include "rollcontact/model/validation.hpp"
 #include "rollcontact/solution.hpp"
 
 namespace rollcontact::geometry {
@@ -28,9 +29,11 @@ struct Discretisation {
 Discretisation build_discretisation(const model::PatchProblem& problem,
                                     const CombinedMaterial& material);
 
-/// Largest admissible number of elements MX·MY and smallest element size DX, DY [mm].
+/// Largest admissible number of elements MX·MY, and the range of element sizes DX, DY [mm] the
+/// influence coefficients represent (the model's, shared with every front end).
 inline constexpr long long max_grid_elements = 2'000'000;
-inline constexpr double min_element_size = 1e-8;
+inline constexpr double min_element_size = model::kMinElementSize_mm;
+inline constexpr double max_element_size = model::kMaxElementSize_mm;
 
 /// Grid of the potential contact for IPOTCN 1..4 (no Hertz needed). Throws ProblemError for
 /// Hertzian or unknown IPOTCN and for grids failing validate_grid (IPOTCN 4 needs MX, MY ≥ 2).
@@ -46,8 +49,8 @@ HertzReport hertz_for_potential(const model::PotentialContact& pot, HertzLoad lo
 /// in y [−s·b, s·b] (3-D, SDEC) or, for 2-D, MY rows of which n_int cover the strip [−b, b].
 Grid hertzian_grid(const model::PotentialContact& pot, const HertzReport& hertz);
 
-/// Throws ProblemError unless 1 ≤ MX, MY, MX·MY ≤ max_grid_elements, DX, DY ≥ min_element_size
-/// and the corner is finite.
+/// Throws ProblemError unless 1 ≤ MX, MY, MX·MY ≤ max_grid_elements, min_element_size ≤ DX, DY ≤
+/// max_element_size and the corner is finite.
 void validate_grid(const Grid& grid);
 
 /// Undeformed distance of IBASE 1/2/3/9 with IPLAN 1/2/3 on `grid`, evaluated at element

@@ -1,6 +1,8 @@
 // Element grid of the potential contact area (spec/physics.md §2): the IPOTCN 1..4 conversions
 // to (xl, yl, dx, dy) and the Hertzian layouts derived from the semi-axes and SCALE.
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -36,6 +38,14 @@ void validate_grid(const Grid& grid) {
       !std::isfinite(grid.dy)) {
     throw ProblemError("element size DX=" + std::to_string(grid.dx) + ", DY=" +
                        std::to_string(grid.dy) + " mm: both must be finite and >= 1e-8 mm");
+  }
+  // Larger elements: the coefficients (∝ size/G) and the pressures they imply leave the range the
+  // products and the single-precision preconditioner represent (DX = 1e30 gave NaN forces).
+  if (grid.dx > max_element_size || grid.dy > max_element_size) {
+    throw ProblemError(
+        fmt::format("element size DX = {} mm, DY = {} mm lies outside [{}, {}] mm: the influence "
+                    "coefficients would over- or underflow",
+                    grid.dx, grid.dy, min_element_size, max_element_size));
   }
   if (!std::isfinite(grid.xl) || !std::isfinite(grid.yl)) {
     throw ProblemError("potential contact corner XL, YL must be finite");

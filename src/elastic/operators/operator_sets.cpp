@@ -81,17 +81,23 @@ void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice f
 
 }  // namespace
 
+TangentialLoadingKey tangential_loading_key(model::TangentialKind kind, double shift_x_mm,
+                                            double shift_y_mm) {
+  // A shift uses C for the previous displacement (material-fixed grid): no rolling step.
+  if (kind == model::TangentialKind::Shift) return {kind, 0.0, 0.0};
+  if (kind == model::TangentialKind::None) kind = model::TangentialKind::SteadyRolling;
+  return {kind, shift_x_mm, shift_y_mm};
+}
+
 void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
                          const CombinedMaterial& material, model::TangentialKind kind,
                          double shift_x_mm, double shift_y_mm, FftChoice fft) {
-  // A shift uses C for the previous displacement (material-fixed grid): no rolling step.
-  if (kind == model::TangentialKind::Shift) shift_x_mm = shift_y_mm = 0.0;
-  if (kind == model::TangentialKind::None) kind = model::TangentialKind::SteadyRolling;
+  const TangentialLoadingKey key = tangential_loading_key(kind, shift_x_mm, shift_y_mm);
   set.grid = grid;
   set.material = material;
-  set.kind = kind;
-  set.shift_x = shift_x_mm;
-  set.shift_y = shift_y_mm;
+  set.kind = key.kind;
+  set.shift_x = key.shift_x;
+  set.shift_y = key.shift_y;
   const bool coupled = is_coupled(material);
   assemble_plain(set, coupled, fft);
   if (set.steady())

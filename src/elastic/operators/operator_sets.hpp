@@ -55,7 +55,17 @@ struct TangentialOperatorSet {
 
   bool steady() const noexcept { return kind == model::TangentialKind::SteadyRolling; }
 };
-/// kind None is treated as steady rolling (as the solver never asks for it).
+/// What a tangential set depends on besides grid and material: the kind of loading (None is
+/// treated as steady rolling, as the solver never asks for it) and the rolling step [mm], zero
+/// for shifts (their previous displacement is taken with C itself).
+struct TangentialLoadingKey {
+  model::TangentialKind kind = model::TangentialKind::SteadyRolling;
+  double shift_x = 0.0, shift_y = 0.0;
+};
+TangentialLoadingKey tangential_loading_key(model::TangentialKind kind, double shift_x_mm,
+                                            double shift_y_mm);
+
+/// Assembles the set for tangential_loading_key(kind, shift_x_mm, shift_y_mm).
 void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
                          const CombinedMaterial& material, model::TangentialKind kind,
                          double shift_x_mm, double shift_y_mm, FftChoice fft);

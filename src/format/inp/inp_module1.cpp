@@ -21,6 +21,7 @@
 #include "format/profiles/profile_slices.hpp"
 #include "format/text/inp_checks.hpp"
 #include "rollcontact/errors.hpp"
+#include "rollcontact/model/validation.hpp"
 
 namespace rollcontact::format {
 
@@ -30,9 +31,9 @@ constexpr FieldKind kInt = FieldKind::integer;
 constexpr FieldKind kReal = FieldKind::real;
 constexpr FieldKind kAngle = FieldKind::angle;
 
-constexpr double kMinElementSize = 1e-8;              // DX, DS [mm]
-constexpr double kMinChord = 5.0, kMaxChord = 500.0;  // profile length [mm]
-constexpr int kMaxFrictionSets = 10;                  // NVF
+constexpr double kMinElementSize = model::kMinElementSize_mm;  // DX, DS [mm]
+constexpr double kMinChord = 5.0, kMaxChord = 500.0;           // profile length [mm]
+constexpr int kMaxFrictionSets = 10;                           // NVF
 constexpr int kDefaultNpotMax = 20000;
 
 /// Names of the law values after the V=1,2 prefix (spec §4.1).

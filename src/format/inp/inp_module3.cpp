@@ -14,6 +14,7 @@
 #include "format/inp/inp_control.hpp"
 #include "format/inp/reader_checks.hpp"
 #include "format/text/inp_checks.hpp"
+#include "rollcontact/model/validation.hpp"
 
 namespace rollcontact::format {
 
@@ -23,8 +24,8 @@ constexpr FieldKind kInt = FieldKind::integer;
 constexpr FieldKind kReal = FieldKind::real;
 constexpr FieldKind kAngle = FieldKind::angle;
 
-constexpr long long kMaxElements = 2000000;  // MX*MY limit
-constexpr double kMinElementSize = 1e-8;     // DX, DY [mm]
+constexpr long long kMaxElements = 2000000;                    // MX*MY limit
+constexpr double kMinElementSize = model::kMinElementSize_mm;  // DX, DY [mm]
 
 std::size_t element_count(const PotentialContact& pc) {
   return static_cast<std::size_t>(pc.mx) * static_cast<std::size_t>(pc.my);

@@ -13,13 +13,14 @@
 #include "format/inp/grid_extent.hpp"
 #include "format/inp/reader_checks.hpp"
 #include "format/toml/toml_sections.hpp"
+#include "rollcontact/model/validation.hpp"
 
 namespace rollcontact::format::toml_input {
 
 namespace {
 
-constexpr long long kMaxElements = 2000000;  // MX*MY limit, as in the .inp reader
-constexpr double kMinElementSize = 1e-8;     // DX, DY [mm]
+constexpr long long kMaxElements = 2000000;                    // MX*MY limit, as in the .inp reader
+constexpr double kMinElementSize = model::kMinElementSize_mm;  // DX, DY [mm]
 constexpr int kMaxSubsurfaceBlocks = 10;
 constexpr int kMaxSubsurfaceCount = 9999;
 

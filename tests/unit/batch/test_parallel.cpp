@@ -45,6 +45,14 @@ TEST(ParallelFor, CyclicScheduleGivesIndexIToWorkerIModWorkers) {
   EXPECT_EQ(w2[1], 1u);
 }
 
+TEST(ParallelFor, WorkerCountIsTheRequestClampedToTheWork) {
+  EXPECT_EQ(worker_count(23, 3), 3u);
+  EXPECT_EQ(worker_count(2, 8), 2u);
+  EXPECT_EQ(worker_count(5, 0), 1u);
+  EXPECT_EQ(worker_count(5, -2), 1u);
+  EXPECT_EQ(worker_count(0, 4), 1u);
+}
+
 TEST(ParallelFor, OneWorkerRunsOnTheCallingThread) {
   const auto caller = std::this_thread::get_id();
   bool same = true;
