@@ -13,6 +13,8 @@
 #include <iterator>
 #include <string>
 
+#include "support/files.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -37,10 +39,7 @@ Expectation expectation_of(const fs::path& file) {
   return {std::stoi(rest.substr(0, colon)), rest.substr(colon + 2)};
 }
 
-std::string file_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using rollcontact::test_support::file_text;
 
 TEST(CliRejectedInputs, EveryFileIsExitTwoAtItsLineAndNothingIsWritten) {
   const fs::path corpus = fs::path(ROLLCONTACT_TEST_DATA_DIR) / "rejected";

@@ -12,6 +12,7 @@
 #include "format/text/input_file.hpp"
 #include "format/toml/toml_case_reader.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::format {
 namespace {
@@ -20,10 +21,7 @@ namespace fs = std::filesystem;
 
 const fs::path kRepoExamples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
 
-std::string file_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using rollcontact::test_support::file_text;
 
 /// The message of the InputError that `f` throws ("" if none).
 template <typename F>
