@@ -37,6 +37,16 @@ void print_case_summary(const CaseOutcome& c) {
     fmt::print("case {:>4}: ERROR {}\n", p.case_number, c.error);
     return;
   }
+  if (c.wheel_rail) {
+    const WheelRailSolution& w = c.wheelrail;
+    fmt::print(
+        "case {:>4}: wheel/rail, {} patch{}  F(TR) = ({:.5g}, {:.5g}, {:.5g}) N  z_ws {:.5g} mm  "
+        "{}\n",
+        p.case_number, w.patches.size(), w.patches.size() == 1 ? "" : "es", w.force_tr.x,
+        w.force_tr.y, w.force_tr.z, w.z_ws_mm,
+        w.converged ? "converged" : "NOT CONVERGED: " + w.message);
+    return;
+  }
   const auto& s = c.solution;
   const auto& t = s.totals;
   fmt::print(
@@ -65,7 +75,7 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
   options.on_case = [quiet, show_picture](const CaseOutcome& c, std::size_t k, std::size_t count) {
     if (quiet) return;
     print_case_summary(c);
-    if (show_picture && c.solved) {
+    if (show_picture && c.solved && !c.wheel_rail) {
       std::ostringstream pic;
       format::write_element_division(pic, c.solution, c.problem.digits.t);
       fmt::print("{}\n", pic.str());

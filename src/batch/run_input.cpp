@@ -8,6 +8,7 @@
 
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/to_model.hpp"
+#include "format/inp/to_wheelrail.hpp"
 #include "format/report/json_writer.hpp"
 #include "format/report/mat_writer.hpp"
 #include "format/report/report_writer.hpp"
@@ -45,52 +46,102 @@ Solution solve_case(const format::CaseRecord& record, PatchSolver& solver) {
   }
 }
 
-RunResult run_problems(const std::vector<format::CaseRecord>& problems,
+namespace {
+
+/// The per-file state of a run: one solver per result element (REID) and module.
+struct RunState {
+  const RunOptions& options;
+  std::map<int, PatchSolver> patch_solvers;
+  std::map<int, WheelsetSolver> wheelset_solvers;
+};
+
+CaseOutcome solve_module3(const format::CaseRecord& problem, RunState& state) {
+  CaseOutcome outcome;
+  outcome.problem = problem;
+  auto [it, inserted] =
+      state.patch_solvers.try_emplace(problem.result_element, state.options.solve);
+  try {
+    if (!problem.source.case_error.empty()) throw ProblemError(problem.source.case_error);
+    outcome.solution = solve_case(problem, it->second);
+    outcome.solved = true;
+    // The reader's consistency overrides are part of what the user must see for this case.
+    auto& warnings = outcome.solution.warnings;
+    warnings.insert(warnings.begin(), problem.source.warnings.begin(),
+                    problem.source.warnings.end());
+  } catch (const NotSupportedError& e) {
+    outcome.error = e.what();
+  } catch (const ProblemError& e) {
+    outcome.error = e.what();
+  }
+  return outcome;
+}
+
+CaseOutcome solve_module1(const format::WheelRailRecord& record, RunState& state) {
+  CaseOutcome outcome;
+  outcome.problem = format::identity_record(record);
+  outcome.wheel_rail = true;
+  auto [it, inserted] =
+      state.wheelset_solvers.try_emplace(record.result_element, state.options.solve);
+  try {
+    if (!record.source.case_error.empty()) throw ProblemError(record.source.case_error);
+    const model::WheelRailProblem problem = format::to_wheelrail_problem(record);
+    outcome.wheelrail = it->second.solve(problem);
+    outcome.solved = true;
+    auto& warnings = outcome.wheelrail.warnings;
+    warnings.insert(warnings.begin(), record.source.warnings.begin(), record.source.warnings.end());
+  } catch (const NotSupportedError& e) {
+    outcome.error = e.what();
+  } catch (const GeometryError& e) {
+    outcome.error = case_context(outcome.problem) + e.what();
+  } catch (const ProblemError& e) {
+    outcome.error = e.what();
+  }
+  return outcome;
+}
+
+}  // namespace
+
+RunResult run_problems(const std::vector<format::InputCase>& problems,
                        const std::string& input_name, const std::filesystem::path& output_stem,
                        const RunOptions& options) {
   RunResult result;
   std::ostringstream report;
   format::write_report_banner(report);
   nlohmann::json cases = nlohmann::json::array();
-  std::map<int, PatchSolver> solvers;  // one PatchSolver (sequence) per result element (REID)
+  RunState state{options, {}, {}};
 
   for (std::size_t k = 0; k < problems.size(); ++k) {
-    const format::CaseRecord& problem = problems[k];
+    const auto* m3 = std::get_if<format::CaseRecord>(&problems[k]);
+    const auto* m1 = std::get_if<format::WheelRailRecord>(&problems[k]);
+    const format::CaseRecord identity = m3 ? *m3 : format::identity_record(*m1);
     CaseOutcome outcome;
-    outcome.problem = problem;
-    if (problem.digits.r == 2 || problem.digits.r == 3) {
+    if (identity.digits.r == 2 || identity.digits.r == 3) {
+      outcome.problem = identity;
+      outcome.wheel_rail = m1 != nullptr;
       outcome.skipped = true;
     } else {
-      auto [it, inserted] = solvers.try_emplace(problem.result_element, options.solve);
-      try {
-        if (!problem.source.case_error.empty()) throw ProblemError(problem.source.case_error);
-        outcome.solution = solve_case(problem, it->second);
-        outcome.solved = true;
-        // The reader's consistency overrides are part of what the user must see for this case.
-        auto& warnings = outcome.solution.warnings;
-        warnings.insert(warnings.begin(), problem.source.warnings.begin(),
-                        problem.source.warnings.end());
-        if (!outcome.solution.solver.converged) ++result.failed;
-      } catch (const NotSupportedError& e) {
-        outcome.error = e.what();
-      } catch (const ProblemError& e) {
-        outcome.error = e.what();
-      }
+      outcome = m3 ? solve_module3(*m3, state) : solve_module1(*m1, state);
+      if (outcome.solved &&
+          !(outcome.wheel_rail ? outcome.wheelrail.converged : outcome.solution.solver.converged))
+        ++result.failed;
       if (!outcome.error.empty()) {
         ++result.failed;
-        const format::SourceInfo& src = problem.source;
+        const format::SourceInfo& src = identity.source;
         if (!src.file.empty())
           outcome.error = src.file + ":" + std::to_string(src.first_line) + ": " + outcome.error;
       }
     }
-    if (outcome.solved) {
-      format::write_case_report(report, problem, outcome.solution);
-      format::write_subs_file(output_stem, problem, outcome.solution);
-      if (problem.digits.a >= 1) format::write_mat_file(output_stem, problem, outcome.solution);
-      cases.push_back(format::case_to_json(problem, outcome.solution));
+    if (outcome.solved && outcome.wheel_rail) {
+      format::write_wheelrail_case_report(report, *m1, identity, outcome.wheelrail);
+      cases.push_back(format::wheelrail_case_to_json(identity, outcome.wheelrail));
+    } else if (outcome.solved) {
+      format::write_case_report(report, *m3, outcome.solution);
+      format::write_subs_file(output_stem, *m3, outcome.solution);
+      if (m3->digits.a >= 1) format::write_mat_file(output_stem, *m3, outcome.solution);
+      cases.push_back(format::case_to_json(*m3, outcome.solution));
     } else if (!outcome.skipped) {
-      format::write_case_error(report, problem, outcome.error);
-      cases.push_back(format::case_error_to_json(problem, outcome.error));
+      format::write_case_error(report, identity, outcome.error);
+      cases.push_back(format::case_error_to_json(identity, outcome.error));
     }
     if (options.on_case) options.on_case(outcome, k, problems.size());
     result.cases.push_back(std::move(outcome));
@@ -109,39 +160,25 @@ RunResult run_problems(const std::vector<format::CaseRecord>& problems,
 
 namespace {
 
-/// Stand-in for a module-1 case until the wheel/rail solver exists: identity, digits and source
-/// of the case, with a per-case error so that the run reports it and continues.
-format::CaseRecord not_supported_stand_in(const format::WheelRailRecord& wr) {
-  format::CaseRecord p;
-  p.case_number = wr.case_number;
-  p.result_element = wr.result_element;
-  p.digits = wr.digits;
-  p.source = wr.source;
-  p.source.case_error = fmt::format("not supported yet: module 1 wheel/rail solver (C1={}, D={})",
-                                    wr.config, wr.discretisation.method);
-  return p;
-}
-
-std::vector<format::CaseRecord> read_problems(const std::filesystem::path& input) {
+std::vector<format::InputCase> read_problems(const std::filesystem::path& input) {
   // TOML case files (docs/case-files.md) by extension; everything else is CONTACT .inp.
-  if (input.extension() == ".toml") return format::read_toml_file(input);
-  std::vector<format::CaseRecord> problems;
-  for (format::InputCase& c : format::read_input_cases(input)) {
-    if (auto* p = std::get_if<format::CaseRecord>(&c)) {
-      problems.push_back(std::move(*p));
-    } else {
-      problems.push_back(not_supported_stand_in(std::get<format::WheelRailRecord>(c)));
-    }
+  if (input.extension() == ".toml") {
+    std::vector<format::InputCase> cases;
+    for (format::CaseRecord& r : format::read_toml_file(input)) cases.emplace_back(std::move(r));
+    return cases;
   }
-  return problems;
+  return format::read_input_cases(input);
 }
 
 /// Every case's values pass the model's check before anything is solved or written, so that a
 /// bad value anywhere is an input error naming file, line and case (exit 2, nothing written),
 /// the same for .inp and TOML. Cases that cannot be converted (not supported, a per-case error)
 /// are left to the run, which reports them case by case.
-void validate_cases(const std::vector<format::CaseRecord>& problems) {
-  for (const format::CaseRecord& r : problems) {
+void validate_cases(const std::vector<format::InputCase>& problems) {
+  for (const format::InputCase& c : problems) {
+    const auto* m3 = std::get_if<format::CaseRecord>(&c);
+    if (m3 == nullptr) continue;  // module 1: the reader checks its values
+    const format::CaseRecord& r = *m3;
     if (!r.source.case_error.empty() || r.digits.r == 2 || r.digits.r == 3) continue;
     model::PatchProblem p;
     try {
@@ -207,7 +244,7 @@ RunResult run_input_file(const std::filesystem::path& input, const RunOptions& o
       options.output_dir.empty() ? input.parent_path() : options.output_dir;
   const std::filesystem::path stem = dir / input.stem();
   refuse_overwriting_input(input, stem);
-  const std::vector<format::CaseRecord> problems = read_problems(input);
+  const std::vector<format::InputCase> problems = read_problems(input);
   validate_cases(problems);
   prepare_output_dir(dir);
   return run_problems(problems, input.filename().string(), stem, options);

@@ -8,18 +8,23 @@
 #include <vector>
 
 #include "format/inp/case_record.hpp"
+#include "format/inp/inp_reader.hpp"
 #include "rollcontact/solution.hpp"
 #include "rollcontact/solve.hpp"
+#include "rollcontact/wheelrail.hpp"
 
 namespace rollcontact::batch {
 
 /// Result of one case of a run.
 struct CaseOutcome {
+  /// The module-3 case, or the identity (number, digits, source) of a module-1 case.
   format::CaseRecord problem;
-  bool solved = false;   ///< a Solution exists
-  Solution solution;     ///< valid when solved
-  std::string error;     ///< non-empty for "error" (not supported, inadmissible data)
-  bool skipped = false;  ///< R = 2, 3: read but not solved
+  bool solved = false;          ///< a Solution (module 3) or a WheelRailSolution (module 1) exists
+  bool wheel_rail = false;      ///< module 1: `wheelrail` holds the result
+  Solution solution;            ///< valid when solved (module 3)
+  WheelRailSolution wheelrail;  ///< valid when solved (module 1)
+  std::string error;            ///< non-empty for "error" (not supported, inadmissible data)
+  bool skipped = false;         ///< R = 2, 3: read but not solved
 };
 
 struct RunOptions {
@@ -45,7 +50,7 @@ Solution solve_case(const format::CaseRecord& record, PatchSolver& solver);
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options);
 
 /// Same for problems already read; `input_name` names the outputs.
-RunResult run_problems(const std::vector<format::CaseRecord>& problems,
+RunResult run_problems(const std::vector<format::InputCase>& problems,
                        const std::string& input_name, const std::filesystem::path& output_stem,
                        const RunOptions& options);
 

@@ -22,6 +22,14 @@
 // borderline elements   | |                                  |                                    |
 // flip                       |
 //
+// Module 1 (wheel/rail, validation.md §3): the patch quantities come out of a contact search, a
+// grid placed on its reference point and a vertical-force iteration, each with its own rounding,
+// so forces get 0.5 % + 2e-4·FZ (FX(TR), FY(TR), FX/FY/FZ(WS), patch FN, FX, FS, MN), PMAX 1 %,
+// the reference location 1e-3 mm (+ the 5e-5 of its printed f12.4), the contact angle 1e-4 rad,
+// Z_WS 2e-3 mm, the creepages 0.5 % + 2e-6 (a location error of 1e-3 mm on a 460 mm wheel),
+// CHI/DQ/VELOC 1e-3 relative; FZ(TR) keeps the 1e-3 of a prescribed force. Patch keys
+// (`patch k/NAME`) look for `patch/NAME` first.
+//
 // Not compared: FN/G, FX/FSTAT/FN, FY/FSTAT/FN (derived from the forces above), ELEN, FRIC,
 // MAX(T1,T2), NPOT (input), NPLAST, INORM, ITANG (iteration counts differ by design).
 
@@ -33,10 +41,13 @@
 namespace rollcontact::batch {
 
 const Tolerance* ToleranceTable::find(std::string_view key) const {
-  // `patch k/NAME`: module-1 patches use the same tolerances as module 3.
+  // `patch k/NAME`: module-1 patch quantities, `patch/NAME` where module 1 differs from module 3.
   if (const auto slash = key.rfind('/');
-      slash != std::string_view::npos && key.substr(0, 6) == "patch ")
+      slash != std::string_view::npos && key.substr(0, 6) == "patch ") {
     key.remove_prefix(slash + 1);
+    const auto m1 = by_quantity.find("patch/" + std::string(key));
+    if (m1 != by_quantity.end()) return &m1->second;
+  }
   const auto it = by_quantity.find(key);
   return it == by_quantity.end() ? nullptr : &it->second;
 }
@@ -60,6 +71,27 @@ ToleranceTable default_tolerances() {
   for (const char* name : {"CREEP X", "CREEP Y", "SHIFT X", "SHIFT Y"})
     t.by_quantity.emplace(name, solved_creepage);
   for (const char* name : {"NCON", "NADH", "NSLIP"}) t.by_quantity.emplace(name, element_count);
+
+  // Module 1.
+  const Tolerance wheelrail_force{.relative = 5e-3, .per_fn = 2e-4};
+  const Tolerance location{.absolute = 1.05e-3};
+  for (const char* name : {"FX(TR)", "FY(TR)", "FX(WS)", "FY(WS)", "FZ(WS)"})
+    t.by_quantity.insert_or_assign(name, wheelrail_force);
+  for (const char* name : {"patch/FN", "patch/FX", "patch/FS", "patch/MN"})
+    t.by_quantity.emplace(name, wheelrail_force);
+  t.by_quantity.emplace("patch/PMAX", Tolerance{.relative = 1e-2});
+  t.by_quantity.emplace("patch/APPROACH", Tolerance{.relative = 5e-3, .absolute = 2e-4});
+  for (const char* name :
+       {"XCP(TR)", "YCP(TR)", "ZCP(TR)", "YCP(R)", "ZCP(R)", "XCP(W)", "YCP(W)", "ZCP(W)"})
+    t.by_quantity.emplace(std::string("patch/") + name, location);
+  t.by_quantity.emplace("patch/DELTCP(TR)", Tolerance{.absolute = 1.05e-4});
+  for (const char* name : {"CKSI", "CETA", "CPHI"})
+    t.by_quantity.emplace(std::string("patch/") + name,
+                          Tolerance{.relative = 5e-3, .absolute = 2e-6});
+  for (const char* name : {"CHI", "DQ", "VELOC"})
+    t.by_quantity.emplace(std::string("patch/") + name,
+                          Tolerance{.relative = 1e-3, .absolute = 1e-6});
+  t.by_quantity.emplace("Z_WS", Tolerance{.absolute = 2e-3});
   return t;
 }
 

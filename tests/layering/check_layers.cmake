@@ -18,12 +18,13 @@ set(allowed_tangential "tangential;physics;elastic;core;grid")
 set(allowed_simplified "simplified;tangential;physics;elastic;core;grid")
 set(allowed_post "post;elastic;core;grid")
 set(allowed_contact "contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
+set(allowed_wheelrail "wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 set(allowed_format/text "format/text")
 set(allowed_format/profiles "format/profiles;format/text")
 set(allowed_format/inp "format/inp;format/profiles;format/text")
 set(allowed_format/toml "format/toml;format/inp;format/text")
 set(allowed_format/report "format/report;format/inp;format/text")
-set(allowed_batch "batch;format/text;format/profiles;format/inp;format/toml;format/report;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
+set(allowed_batch "batch;format/text;format/profiles;format/inp;format/toml;format/report;wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 
 set(violations "")
 function(check_folder folder files)
@@ -51,7 +52,7 @@ function(check_folder folder files)
   endforeach()
 endfunction()
 
-foreach(folder model core grid physics elastic elastic/operators geometry normal tangential simplified post contact
+foreach(folder model core grid physics elastic elastic/operators geometry normal tangential simplified post contact wheelrail
                format/text format/profiles format/inp format/toml format/report batch)
   file(GLOB files "${ROOT}/src/${folder}/*.hpp" "${ROOT}/src/${folder}/*.cpp")
   check_folder(${folder} "${files}")

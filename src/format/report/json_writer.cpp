@@ -54,6 +54,59 @@ nlohmann::json case_to_json(const CaseRecord& problem, const Solution& solution)
   return j;
 }
 
+nlohmann::json wheelrail_case_to_json(const CaseRecord& identity,
+                                      const WheelRailSolution& solution) {
+  nlohmann::json j = case_identity(identity);
+  j["module"] = 1;
+  j.erase("patch");
+  j["status"] = solution.converged ? "converged" : "not_converged";
+  j["message"] = solution.converged ? std::string() : solution.message;
+  auto vec = [](const Vector3& v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+  j["z_ws"] = solution.z_ws_mm;
+  j["force_tr"] = vec(solution.force_tr);
+  j["force_ws"] = vec(solution.force_ws);
+  nlohmann::json trace = nlohmann::json::array();
+  for (const VerticalForceStep& s : solution.trace)
+    trace.push_back({{"iteration", s.iteration},
+                     {"z_ws", s.z_ws_mm},
+                     {"fz", s.fz_N},
+                     {"dfz_dz", s.dfz_dz_N_per_mm}});
+  if (!trace.empty()) j["vertical_force_iterations"] = std::move(trace);
+  nlohmann::json patches = nlohmann::json::array();
+  for (const WheelRailPatch& w : solution.patches) {
+    const Totals& t = w.solution.totals;
+    const Statistics& s = w.solution.statistics;
+    patches.push_back({
+        {"reference_tr", vec(w.reference_tr)},
+        {"contact_angle", w.contact_angle_rad},
+        {"reference_rail", nlohmann::json::array({w.y_rail_mm, w.z_rail_mm})},
+        {"reference_wheel", vec(w.reference_wheel)},
+        {"creepages", {{"xi", w.xi}, {"eta", w.eta}, {"phi", w.phi_per_mm}}},
+        {"rolling", {{"chi", w.chi_rad}, {"dq", w.dq_mm}, {"veloc", w.veloc_mm_s}}},
+        {"grid",
+         {{"dx", w.dx_mm},
+          {"ds", w.ds_mm},
+          {"mx", w.solution.grid.mx},
+          {"my", w.solution.grid.my}}},
+        {"force_tr", vec(w.force_tr)},
+        {"force_ws", vec(w.force_ws)},
+        {"fn", t.fn},
+        {"fx", t.fx},
+        {"fs", t.fy},
+        {"mn", t.mz},
+        {"pen", t.pen},
+        {"pmax", t.pmax},
+        {"elastic_energy", t.elastic_energy},
+        {"frictional_power", t.frictional_power},
+        {"statistics", {{"npot", s.npot}, {"ncon", s.ncon}, {"nadh", s.nadh}, {"nslip", s.nslip}}},
+        {"converged", w.solution.solver.converged},
+    });
+  }
+  j["patches"] = std::move(patches);
+  if (!solution.warnings.empty()) j["warnings"] = solution.warnings;
+  return j;
+}
+
 nlohmann::json case_error_to_json(const CaseRecord& problem, const std::string& message) {
   nlohmann::json j = case_identity(problem);
   j["status"] = "error";

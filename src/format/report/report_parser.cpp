@@ -90,6 +90,11 @@ ValueKind classify(const std::vector<std::string>& labels) {
   if (first == "FN/G" || first == "TILDE_FN") return ValueKind::Reals;
   if (first == "FX(TR)" && second == "FY(TR)") return ValueKind::Reals;
   if (first == "NPOT" && second == "NCON") return ValueKind::Integers;
+  // Module 1: contact reference location, kinematic constants, wheelset position.
+  if ((first == "XCP(TR)" && second == "YCP(TR)") || (first == "XCP(W)" && second == "YCP(W)"))
+    return ValueKind::Reals;
+  if (first == "CHI" && second == "DQ") return ValueKind::Reals;
+  if (first == "S_WS" && second == "Y_WS") return ValueKind::Reals;
   return ValueKind::None;
 }
 
@@ -247,7 +252,7 @@ Report parse_report(std::istream& in) {
       const ValueKind kind = classify(labels);
       if (kind != ValueKind::None) {
         // Module-1 totals over all patches belong to the case, wherever they are printed.
-        pending_case_level = labels[0] == "FX(TR)";
+        pending_case_level = labels[0] == "FX(TR)" || labels[0] == "S_WS";
         pending_labels = std::move(labels);
         pending = kind;
       }

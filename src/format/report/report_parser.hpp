@@ -20,7 +20,9 @@ namespace rollcontact::format {
 ///    `CREEP X` / `SHIFT X`, then `FY/FSTAT/FN` or `CREEP Y` / `SHIFT Y`, `APPROACH`, `PMAX`,
 ///    `MAX(T1,T2)` (module 1 per patch: `FS`, `MN`, `FS/FSTAT/FN`; D=4 `BAR_FN`, `TILDE_FN`, …);
 ///  * statistics: `NPOT NCON NADH NSLIP [NPLAST] INORM ITANG`;
-///  * module 1, per case: `FX(TR) FY(TR) FZ(TR) FX(WS) FY(WS) FZ(WS)`.
+///  * module 1, per case: `FX(TR) FY(TR) FZ(TR) FX(WS) FY(WS) FZ(WS)`, `S_WS Y_WS Z_WS …`;
+///    per patch: `XCP(TR) YCP(TR) ZCP(TR) DELTCP(TR) YCP(R) ZCP(R)`, `XCP(W) YCP(W) ZCP(W)`,
+///    `CHI DQ VELOC CKSI CETA CPHI`.
 /// Module-1 quantities of contact patch k carry the prefix `patch k/` (`patch 1/FN`); module 3
 /// has one implicit patch and no prefix. A field printed as asterisks (Fortran overflow) is NaN.
 struct ReportCase {

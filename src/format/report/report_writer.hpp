@@ -5,7 +5,9 @@
 #include <string>
 
 #include "format/inp/case_record.hpp"
+#include "format/inp/wheelrail_record.hpp"
 #include "rollcontact/solution.hpp"
+#include "rollcontact/wheelrail.hpp"
 
 namespace rollcontact::format {
 
@@ -15,6 +17,10 @@ void write_report_banner(std::ostream& os);
 void write_case_report(std::ostream& os, const CaseRecord& problem, const Solution& solution);
 /// A case that could not be solved (error / not supported): header and message.
 void write_case_error(std::ostream& os, const CaseRecord& problem, const std::string& message);
+/// All blocks of one solved wheel/rail (module 1) case, spec/outputs.md §3.8. `identity` is the
+/// case's number, result element and digits as a module-3 record (for the shared blocks).
+void write_wheelrail_case_report(std::ostream& os, const WheelRailRecord& record,
+                                 const CaseRecord& identity, const WheelRailSolution& solution);
 /// Closing lines.
 void write_report_end(std::ostream& os);
 

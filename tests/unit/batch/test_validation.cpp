@@ -39,8 +39,15 @@ TEST(ValidationTolerances, TableHasTheContractQuantities) {
     EXPECT_NE(t.find(name), nullptr) << name;
   for (const char* name : {"FN/G", "FX/FSTAT/FN", "ELEN", "FRIC", "NPOT", "INORM", "ITANG"})
     EXPECT_EQ(t.find(name), nullptr) << name;
+  // Module-1 patches: validation.md §3's wheel/rail tolerances (0.5 % + 2e-4·FZ for forces,
+  // 1 % PMAX, 1e-3 mm locations, 1e-4 rad angles); quantities without one fall back to module 3.
   ASSERT_NE(t.find("patch 2/FN"), nullptr);
-  EXPECT_EQ(t.find("patch 2/FN"), t.find("FN"));
+  EXPECT_NEAR(allowed_difference(*t.find("patch 2/FN"), 9997.0, 10000.0), 0.005 * 9997 + 2.0, 1e-6);
+  EXPECT_NEAR(allowed_difference(*t.find("patch 1/PMAX"), 338.3, 10000.0), 3.383, 1e-6);
+  EXPECT_NEAR(allowed_difference(*t.find("patch 1/YCP(TR)"), 751.8726, 10000.0), 1.05e-3, 1e-9);
+  EXPECT_NEAR(allowed_difference(*t.find("patch 1/DELTCP(TR)"), -0.029, 10000.0), 1.05e-4, 1e-10);
+  EXPECT_NEAR(allowed_difference(*t.find("Z_WS"), 0.1981, 10000.0), 2e-3, 1e-10);
+  EXPECT_EQ(t.find("patch 2/NCON"), t.find("NCON"));
   // The contract: forces 1e-3 relative + 1e-6·FN absolute; counts at least ±2.
   EXPECT_NEAR(allowed_difference(*t.find("FX"), 100.0, 1000.0), 0.1 + 1e-3, 1e-9);
   EXPECT_NEAR(allowed_difference(*t.find("NCON"), 177, 9.195), 2.0, 1e-12);

@@ -1,0 +1,104 @@
+#pragma once
+// WheelRailProblem: one wheel on one rail (CONTACT's module 1, spec/physics.md §13) — physics
+// only. The .inp reader, the TOML reader and a C++ program build it; the WheelsetSolver solves
+// it: profiles → placement → contact search → one PatchProblem per contact patch → totals,
+// with the vertical-force iteration when FZ is prescribed.
+//
+// Frames (spec/physics.md §13.2): track coordinates x along the track, y lateral towards the
+// field side of the rail, z downwards; all geometry is computed for a right-side wheel. A left
+// wheel is described in the mirrored frame (its inputs read as those of a right wheel) and its
+// printed y-components change sign. Units: mm, N, rad, s; velocities mm/s, rad/s.
+
+#include <numbers>
+#include <string>
+
+#include "rollcontact/model/patch_problem.hpp"
+#include "rollcontact/model/profile.hpp"
+
+namespace rollcontact::model {
+
+enum class WheelSide { Left, Right };
+
+/// How a profile's points become a smooth curve (spec/inp-format.md §5.1, physics.md §13.1).
+struct ProfileSmoothing {
+  int method = 0;       ///< ISMOOTH: 0 unweighted spline (λ = smooth), 1 weighted (L_filt)
+  double smooth = 0.0;  ///< ISMOOTH 0: λ; 1: filter wavelength L_filt [mm]; <= 0: interpolate
+  double zigzag_threshold_rad = 5.0 * std::numbers::pi / 6.0;  ///< ZIGTHRS
+  double kink_high_rad = std::numbers::pi / 6.0;               ///< KINKHIGH
+  double kink_low_rad = std::numbers::pi / 30.0;               ///< KINKLOW
+  double kink_window_mm = 2.0;                                 ///< KINKWID
+  double max_omitted_fraction = 0.5;                           ///< MAXOMIT
+};
+
+/// A rail or wheel profile in canonical form (Profile: mm, z down, y to the field side).
+struct WheelRailProfile {
+  Profile points;
+  ProfileSmoothing smoothing;
+};
+
+/// Contact search and patch grids (the D=2 line).
+struct ContactSearchSettings {
+  double dx_mm = 0.2;                       ///< element size in rolling direction
+  double ds_mm = 0.2;                       ///< element size along the contact curve
+  double dq_rel = 1.0;                      ///< rolling step relative to dx
+  double a_sep_rad = std::numbers::pi / 2;  ///< angle above which patches are separate
+  double d_sep_mm = 8.0;                    ///< distance above which patches are separate
+  double d_comb_mm = 4.0;                   ///< distance below which patches are combined
+  double d_turn_mm = 12.0;                  ///< distance above which patches are independent
+  double g_miss_mm = -1.0;                  ///< near misses kept below this gap (< 0: none)
+  int max_elements = 20000;                 ///< NPOT_MAX: larger grids are coarsened (dx, ds ×2)
+};
+
+/// Track and rail position (Z=1,3; track, not roller rig).
+struct Track {
+  double gauge_height_mm = 14.0;              ///< > 0: the rail is placed by its gauge point
+  double gauge_width_mm = 1435.0;             ///< used when gauge_height_mm > 0
+  double rail_y0_mm = 0.0, rail_z0_mm = 0.0;  ///< used when gauge_height_mm <= 0
+  double cant_rad = 0.0;
+  double curvature_per_mm = 0.0;
+};
+
+/// Rail deviations from the track design and their rates.
+struct RailState {
+  double dy_mm = 0.0, dz_mm = 0.0, droll_rad = 0.0;
+  double vy_mm_s = 0.0, vz_mm_s = 0.0, vroll_rad_s = 0.0;
+};
+
+/// Where the wheel profile sits on the wheelset.
+struct WheelsetGeometry {
+  double flange_back_distance_mm = 1360.0;  ///< FBDIST
+  double flange_back_position_mm = -70.0;   ///< FBPOS, in wheel-profile y
+  double nominal_radius_mm = 460.0;         ///< NOMRADW
+  double tape_circle_y_mm = 1000.0;         ///< YTAPE (|y| >= 999: no correction)
+};
+
+/// Wheelset position, orientation and velocities in track coordinates.
+struct WheelsetState {
+  double s_mm = 0.0, y_mm = 0.0;
+  double z_mm = 0.0;  ///< vertical position (prescribed position)
+  double fz_N = 0.0;  ///< vertical force on the rail (prescribed force)
+  double roll_rad = 0.0, yaw_rad = 0.0, pitch_rad = 0.0;
+  double vs_mm_s = 0.0, vy_mm_s = 0.0, vz_mm_s = 0.0;
+  double vroll_rad_s = 0.0, vyaw_rad_s = 0.0, vpitch_rad_s = 0.0;
+};
+
+enum class VerticalLoading { Position, Force };
+
+struct WheelRailProblem {
+  WheelSide side = WheelSide::Right;
+  /// Bodies (1 = rail, 2 = wheel), friction, kind of tangential problem, pressure model, solver
+  /// options and the sequence link: everything every patch shares. The wheel/rail solver fills in
+  /// each patch's grid, undeformed distance, approach, creepages and rolling.
+  PatchProblem patch;
+  WheelRailProfile rail, wheel;
+  Track track;
+  RailState rail_state;
+  WheelsetGeometry wheelset;
+  WheelsetState motion;
+  VerticalLoading vertical = VerticalLoading::Force;
+  ContactSearchSettings search;
+  /// The first case of a sequence: contact at a profile end is an error (misplaced wheel).
+  bool first_of_sequence = true;
+};
+
+}  // namespace rollcontact::model

@@ -1,0 +1,82 @@
+#pragma once
+// The wheel/rail solver API (CONTACT's module 1): a WheelsetSolver takes a
+// model::WheelRailProblem — profiles, track, wheelset position and velocities — and returns the
+// contact patches with their reference locations, creepages, tractions and forces, and the
+// totals, iterating the wheelset height when the vertical force is prescribed.
+//
+// Sign conventions (spec/physics.md §13): forces act on the rail; track coordinates x along the
+// track, y lateral, z down. For a left wheel all lateral components (y, contact angle, FY, FS,
+// MN, η, φ) are given in the left wheel's mirrored frame, as CONTACT prints them.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rollcontact/model/wheelrail.hpp"
+#include "rollcontact/solution.hpp"
+#include "rollcontact/solve.hpp"
+
+namespace rollcontact {
+
+struct Vector3 {
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+
+/// One contact patch.
+struct WheelRailPatch {
+  Vector3 reference_tr;          ///< reference point in track coordinates [mm]
+  double contact_angle_rad = 0;  ///< δ: rotation of the contact plane about the track x-axis
+  double y_rail_mm = 0, z_rail_mm = 0;     ///< reference point in rail-profile coordinates
+  Vector3 reference_wheel;                 ///< reference point relative to the wheel-profile origin
+  double xi = 0, eta = 0, phi_per_mm = 0;  ///< creepages ξ, η [-], spin φ [rad/mm]
+  double chi_rad = 0, dq_mm = 1, veloc_mm_s = 1;  ///< rolling direction, step, velocity
+  double dx_mm = 0, ds_mm = 0;                    ///< element sizes in effect
+  Vector3 force_tr;                               ///< force on the rail, track coordinates [N]
+  Vector3 force_ws;                               ///< force on the rail, wheelset coordinates [N]
+  /// The patch as a module-3 problem: FN, FX and FS (= fy), MN (= mz, about the reference point),
+  /// approach, pmax, energy, power, fields on the patch grid (x rolling, y along the contact).
+  Solution solution;
+};
+
+/// One step of the vertical-force iteration (N=1): wheelset height and the resulting FZ(TR).
+struct VerticalForceStep {
+  int iteration = 0;
+  double z_ws_mm = 0.0;
+  double fz_N = 0.0;
+  double dfz_dz_N_per_mm = 0.0;
+};
+
+struct WheelRailSolution {
+  std::vector<WheelRailPatch> patches;   ///< sorted by lateral position; empty: no contact
+  Vector3 force_tr, force_ws;            ///< totals on the rail [N]
+  double z_ws_mm = 0.0;                  ///< wheelset height used (solved when FZ is prescribed)
+  std::vector<VerticalForceStep> trace;  ///< N=1 iterates (iteration 0: geometry only)
+  bool converged = true;
+  std::string message;                ///< why not converged
+  std::vector<std::string> warnings;  ///< adjustments made (grid coarsened, ...)
+};
+
+/// Solves wheel/rail cases one after another, keeping the profile curves while the profiles stay
+/// the same and one PatchSolver per patch position (cached influence operators). Not
+/// thread-safe; independent solvers may run in different threads.
+class WheelsetSolver {
+ public:
+  explicit WheelsetSolver(SolveOptions options = {});
+  ~WheelsetSolver();
+  WheelsetSolver(WheelsetSolver&&) noexcept;
+  WheelsetSolver& operator=(WheelsetSolver&&) noexcept;
+  WheelsetSolver(const WheelsetSolver&) = delete;
+  WheelsetSolver& operator=(const WheelsetSolver&) = delete;
+
+  /// Throws GeometryError for profiles or placements that make no sense (a profile of the wrong
+  /// length, contact at a profile end in the first case), ProblemError for inadmissible data.
+  /// Non-convergence is reported in the solution, never silent.
+  WheelRailSolution solve(const model::WheelRailProblem& problem);
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace rollcontact

@@ -1,0 +1,108 @@
+// WheelRailRecord → model::WheelRailProblem (spec/inp-format.md §5, physics.md §13).
+
+#include "format/inp/to_wheelrail.hpp"
+
+#include <fmt/format.h>
+
+#include "format/inp/to_model.hpp"
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::format {
+
+namespace {
+
+[[noreturn]] void not_supported(const std::string& what) {
+  throw NotSupportedError("not supported yet: module 1 " + what);
+}
+
+model::WheelRailProfile profile_of(const ProfileSpec& s) {
+  model::WheelRailProfile p;
+  p.points = s.profile;
+  p.smoothing.method = s.ismooth;
+  p.smoothing.smooth = s.smooth;
+  p.smoothing.zigzag_threshold_rad = s.zigthrs;
+  p.smoothing.kink_high_rad = s.kinkhigh;
+  p.smoothing.kink_low_rad = s.kinklow;
+  p.smoothing.kink_window_mm = s.kinkwid;
+  p.smoothing.max_omitted_fraction = s.maxomit;
+  return p;
+}
+
+/// The settings every patch shares, through the module-3 adapter: a case record with the
+/// module-1 meanings of N, E, Z taken out (each patch is posed with its approach).
+model::PatchProblem patch_template(const WheelRailRecord& r) {
+  CaseRecord t;
+  t.case_number = r.case_number;
+  t.result_element = r.result_element;
+  t.digits = r.digits;
+  t.digits.n = 0;
+  t.digits.e = 0;
+  t.digits.z = 0;
+  t.digits.v = 0;
+  t.digits.g = r.solver.method;
+  t.solver = r.solver;
+  t.friction = r.friction;
+  t.materials = r.materials;
+  t.damping = r.damping;
+  t.heat = r.heat;
+  t.subsurface = r.subsurface;
+  t.source = r.source;
+  return to_patch_problem(t);
+}
+
+}  // namespace
+
+CaseRecord identity_record(const WheelRailRecord& r) {
+  CaseRecord p;
+  p.case_number = r.case_number;
+  p.result_element = r.result_element;
+  p.digits = r.digits;
+  p.solver = r.solver;
+  p.friction = r.friction;
+  p.source = r.source;
+  return p;
+}
+
+void check_supported(const WheelRailRecord& r) {
+  const ControlDigits& d = r.digits;
+  if (r.is_roller()) not_supported(fmt::format("roller rigs (C1={})", r.config));
+  if (r.discretisation.method != 2)
+    not_supported(fmt::format("contact search D={}", r.discretisation.method));
+  if (d.t == 1 || d.t == 2) not_supported(fmt::format("transient rolling or shifts T={}", d.t));
+  if (d.f != 0) not_supported(fmt::format("prescribed forces or massless rail F={}", d.f));
+  if (d.b == 5 || d.b == 6) not_supported(fmt::format("KPEC/ANALYN B={}", d.b));
+  if (r.variable_friction.v != 0)
+    not_supported(fmt::format("variable friction V={}", r.variable_friction.v));
+  if (r.rail.sliced || r.wheel.sliced) not_supported("variable profiles (slices files)");
+  if (d.e == 4 || d.e == 5) not_supported(fmt::format("flexible wheelsets E={}", d.e));
+  if (r.rail.smooth > 0 && r.rail.ismooth == 2) not_supported("ISMOOTH=2 (rail profile)");
+  if (r.wheel.smooth > 0 && r.wheel.ismooth == 2) not_supported("ISMOOTH=2 (wheel profile)");
+  if (d.gapwgt != 0) not_supported(fmt::format("GAPWGT={}", d.gapwgt));
+  if (r.discretisation.g_miss > 0) not_supported("near misses (G_MISS > 0)");
+}
+
+model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
+  check_supported(r);
+  model::WheelRailProblem p;
+  p.side = r.is_left() ? model::WheelSide::Left : model::WheelSide::Right;
+  p.patch = patch_template(r);
+  p.rail = profile_of(r.rail);
+  p.wheel = profile_of(r.wheel);
+  const TrackDimensions& tr = r.track;
+  p.track = {tr.gaught, tr.gaugwd, tr.raily0, tr.railz0, tr.cant, tr.curv};
+  const RailDeviations& rd = r.rail_deviations;
+  p.rail_state = {rd.dy, rd.dz, rd.droll, rd.vy, rd.vz, rd.vroll};
+  const WheelsetDimensions& w = r.wheelset;
+  p.wheelset = {w.fbdist, w.fbpos, w.nomradw, w.ytape};
+  const WheelsetMotion& m = r.motion;
+  p.motion = {m.s,  m.y,  m.z,  m.fz,    m.roll, m.yaw,   m.pitch,
+              m.vs, m.vy, m.vz, m.vroll, m.vyaw, m.vpitch};
+  p.vertical = r.digits.n == 1 ? model::VerticalLoading::Force : model::VerticalLoading::Position;
+  const WheelRailDiscretisation& ds = r.discretisation;
+  p.search = {ds.dx,     ds.ds,     ds.dqrel,  ds.a_sep,  ds.d_sep,
+              ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max};
+  p.first_of_sequence = r.case_number == 1;
+  return p;
+}
+
+}  // namespace rollcontact::format

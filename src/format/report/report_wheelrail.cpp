@@ -1,0 +1,146 @@
+// The module-1 (wheel/rail) blocks of the report (spec/outputs.md §3.8): vertical-force trace,
+// problem echo, wheelset position, total forces on the rail, and per contact patch its reference
+// location, kinematic constants, forces, statistics and element-division picture.
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <numbers>
+#include <ostream>
+#include <string>
+
+#include "format/report/number_format.hpp"
+#include "format/report/report_internal.hpp"
+#include "format/report/report_values.hpp"
+#include "format/report/report_writer.hpp"
+
+namespace rollcontact::format {
+
+namespace {
+
+using report::line;
+
+std::string sig(double v) {
+  return fmt_sig(12, 4, 4, v);
+}
+std::string f4(double v) {
+  return fortran_f(v, 12, 4);
+}
+
+void write_trace(std::ostream& os, const WheelRailSolution& s) {
+  for (const VerticalForceStep& t : s.trace)
+    line(os, fmt::format("    {:6d}, NR,  z_ws, Fz: {}{}, dFz/dz: {}", t.iteration,
+                         fmt_sig(12, 4, 4, t.z_ws_mm), fmt_sig(12, 4, 4, t.fz_N),
+                         fmt_sig(12, 4, 4, t.dfz_dz_N_per_mm)));
+}
+
+void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelRailSolution& s) {
+  const ControlDigits& d = r.digits;
+  const std::size_t n = s.patches.size();
+  line(os, "");
+  line(os, fmt::format(" WHEEL-RAIL CONTACT, {} WHEEL, {:2d} CONTACT {}",
+                       r.is_left() ? "LEFT" : "RIGHT", n, n == 1 ? "PATCH" : "PATCHES"));
+  line(os, "");
+  line(os, fmt::format(" CPBTNFS.  CONFIG {}, PVTIME {}, BOUND {:2d}, TANG {:3d}, NORM {:3d}, "
+                       "FORCE {:2d}, STRESS {}",
+                       r.config, d.p, d.b, d.t, d.n, d.f, d.s));
+  line(os, fmt::format(" VLDCMZE.  VARFRC {}, FRCLAW {}, DISCNS {}, INFLCF {}, MATER {:2d}, "
+                       "ZTRACK {}, EWHEEL {}",
+                       d.v, d.l, d.d, d.c, d.m, d.z, d.e));
+  line(os, fmt::format(" HGIAOWR.  HEAT {:3d}, GAUSEI {}, IESTIM {}, MATFIL {}, OUTPUT {}, "
+                       "FLOW {:3d}, RETURN {}",
+                       d.h, d.g, d.i, d.a, d.o, d.w, d.r));
+  line(os, std::string(" VERTICAL PROBLEM WITH PRESCRIBED ") +
+               (d.n == 1 ? "VERTICAL FORCE" : "POSITION") + ", FULL SOLUTION");
+  if (d.t == 3) line(os, " STEADY STATE ROLLING, CREEPAGE PRESCRIBED");
+  line(os, "");
+  line(os, " DISCRETISATION PARAMETERS");
+  line(os, "     DX          DS          DQREL       A_SEP       D_SEP       D_COMB");
+  const WheelRailDiscretisation& ds = r.discretisation;
+  line(os, "  " + sig(ds.dx) + sig(ds.ds) + sig(ds.dqrel) + sig(ds.a_sep) + sig(ds.d_sep) +
+               sig(ds.d_comb));
+  line(os, "");
+  line(os, " WHEEL-SET POSITION AND VELOCITY");
+  line(os, "     S_WS        Y_WS        Z_WS        ROLL_WS     YAW_WS      PITCH_WS");
+  const WheelsetMotion& m = r.motion;
+  line(os, "  " + sig(m.s) + sig(m.y) + sig(s.z_ws_mm) + sig(m.roll) + sig(m.yaw) + sig(m.pitch));
+  line(os, "");
+  line(os, "     VX_WS       VY_WS       VZ_WS       VROLL_WS    VYAW_WS     VPITCH_WS");
+  line(os, "  " + sig(m.vs) + sig(m.vy) + sig(m.vz) + sig(m.vroll) + sig(m.vyaw) +
+               fmt_sig(12, 8, 8, m.vpitch));
+}
+
+void write_totals(std::ostream& os, const WheelRailSolution& s) {
+  line(os, "");
+  line(os, " TOTAL FORCES ON RAIL");
+  line(os, "     FX(TR)      FY(TR)      FZ(TR)      FX(WS)      FY(WS)      FZ(WS)");
+  line(os, "  " + sig(s.force_tr.x) + sig(s.force_tr.y) + sig(s.force_tr.z) + sig(s.force_ws.x) +
+               sig(s.force_ws.y) + sig(s.force_ws.z));
+}
+
+void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& identity,
+                 const WheelRailPatch& w, int k) {
+  const ControlDigits& d = r.digits;
+  line(os, "");
+  line(os, fmt::format(" ----- DATA FOR CONTACT PATCH {:2d} -----", k));
+  if (d.o >= 2) {
+    line(os, "");
+    line(os, " CONTACT REFERENCE LOCATION");
+    line(os, "     XCP(TR)     YCP(TR)     ZCP(TR)    DELTCP(TR)   YCP(R)      ZCP(R)");
+    line(os, "  " + f4(w.reference_tr.x) + f4(w.reference_tr.y) + f4(w.reference_tr.z) +
+                 f4(w.contact_angle_rad) + f4(w.y_rail_mm) + f4(w.z_rail_mm));
+    line(os, "");
+    line(os, "     XCP(W)      YCP(W)      ZCP(W)");
+    line(os, "  " + f4(w.reference_wheel.x) + f4(w.reference_wheel.y) + f4(w.reference_wheel.z));
+    line(os, "");
+    line(os, " KINEMATIC CONSTANTS");
+    line(os, "     CHI         DQ          VELOC       CKSI        CETA        CPHI");
+    line(os, "  " + sig(w.chi_rad) + sig(w.dq_mm) + sig(w.veloc_mm_s) + sig(w.xi) + sig(w.eta) +
+                 sig(w.phi_per_mm));
+  }
+  const Totals& t = w.solution.totals;
+  const double mu = static_friction(r.friction);
+  const double noise = 0.5 * r.solver.eps * t.fn * mu;
+  line(os, "");
+  line(os, " TOTAL FORCES, TORSIONAL MOMENT, ELASTIC ENERGY, FRICTIONAL POWER");
+  line(os, "     FN          FX          FS          MN         ELAST.EN.   FRIC.POWER");
+  line(os, "  " + sig(t.fn) + sig(filter_small(t.fx, noise)) + sig(filter_small(t.fy, noise)) +
+               sig(filter_small(t.mz, noise)) + sig(t.elastic_energy) + sig(t.frictional_power));
+  const double scale = t.fn * mu;
+  line(os, "     FN/G      FX/FSTAT/FN FS/FSTAT/FN   APPROACH     PMAX    ");
+  const double g = w.solution.material.g;
+  line(os, "  " + sig(g != 0 ? t.fn / g : 0.0) +
+               sig(filter_small(scale != 0 ? t.fx / scale : 0.0, 0.5 * r.solver.eps)) +
+               sig(filter_small(scale != 0 ? t.fy / scale : 0.0, 0.5 * r.solver.eps)) +
+               fmt_sig(12, 6, 4, t.pen) + sig(t.pmax));
+  if (d.o >= 2) report::write_statistics(os, identity, w.solution);
+  if (d.o >= 3) {
+    line(os, "");
+    line(os, " FORM OF THE CONTACT, ADHESION AND SLIP-AREA`S:");
+    write_element_division(os, w.solution, d.t, w.chi_rad);
+  }
+}
+
+}  // namespace
+
+void write_wheelrail_case_report(std::ostream& os, const WheelRailRecord& record,
+                                 const CaseRecord& identity, const WheelRailSolution& solution) {
+  write_case_header(os, identity);
+  write_trace(os, solution);
+  for (const std::string& w : solution.warnings) line(os, " WARNING: " + w);
+  if (!solution.converged)
+    line(os, " WARNING: the solver did not converge: " +
+                 (solution.message.empty() ? std::string("(no details)") : solution.message));
+  const ControlDigits& d = record.digits;
+  if (d.r >= 2 || d.o <= 0) return;
+  if (d.o >= 2) write_problem_echo(os, record, solution);
+  write_totals(os, solution);
+  int k = 0;
+  for (const WheelRailPatch& w : solution.patches) write_patch(os, record, identity, w, ++k);
+  if (solution.patches.empty()) {
+    line(os, "");
+    line(os, " ----- NO CONTACT FOUND -----");
+  }
+}
+
+}  // namespace rollcontact::format

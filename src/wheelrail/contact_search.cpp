@@ -1,0 +1,197 @@
+#include "wheelrail/contact_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace rollcontact::wheelrail {
+
+namespace {
+
+constexpr double kNoWheel = 1e30;
+
+/// The contact locus sampled along the wheel profile and mapped onto the lateral grid: where
+/// several locus segments cover one grid position, the deepest wheel point counts.
+void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                const WheelsetPose& pose, GapFunction& g, std::vector<double>& z_locus) {
+  const std::size_t n = g.gap.size();
+  z_locus.assign(n, -kNoWheel);
+  g.x_locus.assign(n, 0.0);
+  const Mat3& R = pose.rotation;
+  const double r_nom = p.wheelset.nominal_radius_mm;
+  const double y_off = prof.wheel_y_offset_mm(), r0 = prof.wheel_r0_mm();
+  const ProfileCurve& wheel = prof.wheel();
+  const double step = 0.5 * g.dy_mm;
+  const auto samples = static_cast<std::size_t>((wheel.y_max() - wheel.y_min()) / step) + 1;
+  Vec3 prev{};
+  bool have_prev = false;
+  for (std::size_t k = 0; k <= samples; ++k) {
+    const double yp = std::min(wheel.y_min() + step * static_cast<double>(k), wheel.y_max());
+    const CurvePoint w = wheel.at_y(yp);
+    if (!w.found) continue;
+    const double r = r0 + w.z;
+    double x = (r * w.dz_dy * R.r[0][1] - r_nom * R.r[0][2]) / R.r[0][0];
+    x = std::clamp(x, -0.5 * r_nom, 0.5 * r_nom);
+    const Vec3 q{x, y_off + yp, std::sqrt(std::max(r * r - x * x, 0.0))};
+    const Vec3 pt = pose.centre + R * q;
+    if (have_prev && pt.y != prev.y) {
+      const Vec3 a = pt.y < prev.y ? pt : prev, b = pt.y < prev.y ? prev : pt;
+      const double j_lo = std::ceil((a.y - g.y0_mm) / g.dy_mm);
+      const double j_hi = std::floor((b.y - g.y0_mm) / g.dy_mm);
+      for (double jj = std::max(j_lo, 0.0); jj <= j_hi && jj < static_cast<double>(n); jj += 1.0) {
+        const auto j = static_cast<std::size_t>(jj);
+        const double u = (g.y(j) - a.y) / (b.y - a.y);
+        const double z = a.z + u * (b.z - a.z);
+        if (z > z_locus[j]) {
+          z_locus[j] = z;
+          g.x_locus[j] = a.x + u * (b.x - a.x);
+        }
+      }
+    }
+    prev = pt;
+    have_prev = true;
+  }
+}
+
+/// Weight of one gap sample (GAPWGT = 0: ∫ g² dx over the interpenetrated length).
+double sample_weight(double pen, double c) {
+  const double t0 = std::sqrt(pen / c);
+  return 2.0 * pen * pen * t0 - (4.0 / 3.0) * pen * c * t0 * t0 * t0 +
+         0.4 * c * c * std::pow(t0, 5);
+}
+
+ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std::size_t first,
+                          std::size_t last, double c) {
+  ContactRegion r;
+  r.first = first;
+  r.last = last;
+  r.x_min = std::numeric_limits<double>::max();
+  r.x_max = -r.x_min;
+  r.min_gap = 0.0;
+  for (std::size_t j = first; j <= last; ++j) {
+    const double pen = -g.gap[j];
+    if (!(pen > 0.0)) continue;
+    const double w = sample_weight(pen, c);
+    r.weight += w;
+    r.wx += w * g.x_locus[j];
+    r.wy += w * g.y(j);
+    r.wd += w * g.rail_angle[j];
+    const double t0 = std::sqrt(pen / c);
+    r.x_min = std::min(r.x_min, g.x_locus[j] - t0);
+    r.x_max = std::max(r.x_max, g.x_locus[j] + t0);
+    r.min_gap = std::min(r.min_gap, g.gap[j]);
+  }
+  r.y_min = g.y(first);
+  r.y_max = g.y(last);
+  const double za = prof.rail_at_track_y(r.y_min).z, zb = prof.rail_at_track_y(r.y_max).z;
+  r.z_min = std::min(za, zb);
+  r.z_max = std::max(za, zb);
+  return r;
+}
+
+/// Reference point and angle from the accumulated weights (physics.md §13.3 step 4).
+void finish_region(ContactRegion& r, const PlacedProfiles& prof) {
+  const double y = r.wy / r.weight;
+  r.reference = {r.wx / r.weight, y, prof.rail_at_track_y(y).z};
+  double d = r.wd / r.weight;
+  constexpr double kHalfPi = 0.5 * std::numbers::pi;
+  if (std::abs(std::abs(d) - kHalfPi) < 1e-3) d = std::copysign(kHalfPi - 1e-3, d);
+  r.delta_rad = d;
+}
+
+double box_distance(const ContactRegion& a, const ContactRegion& b) {
+  const double dy = std::max({0.0, b.y_min - a.y_max, a.y_min - b.y_max});
+  const double dz = std::max({0.0, b.z_min - a.z_max, a.z_min - b.z_max});
+  return std::hypot(dy, dz);
+}
+
+/// Step 5: neighbouring regions closer than D_SEP (and within A_SEP in angle) form one patch.
+std::vector<ContactRegion> combine(std::vector<ContactRegion> regions,
+                                   const model::ContactSearchSettings& s) {
+  std::vector<ContactRegion> out;
+  for (ContactRegion& r : regions) {
+    if (!out.empty()) {
+      ContactRegion& q = out.back();
+      const double angle = std::abs(q.wd / q.weight - r.wd / r.weight);
+      if (angle <= s.a_sep_rad && box_distance(q, r) <= s.d_sep_mm) {
+        q.last = r.last;
+        q.x_min = std::min(q.x_min, r.x_min);
+        q.x_max = std::max(q.x_max, r.x_max);
+        q.y_max = r.y_max;
+        q.z_min = std::min(q.z_min, r.z_min);
+        q.z_max = std::max(q.z_max, r.z_max);
+        q.min_gap = std::min(q.min_gap, r.min_gap);
+        q.weight += r.weight;
+        q.wx += r.wx;
+        q.wy += r.wy;
+        q.wd += r.wd;
+        continue;
+      }
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace
+
+SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                            const WheelsetPose& pose) {
+  SearchResult res;
+  GapFunction& g = res.gap;
+  g.dy_mm = 0.3 * p.search.ds_mm;
+  g.y0_mm = prof.rail_y_mm() + prof.rail().y_min();
+  const auto n =
+      static_cast<std::size_t>((prof.rail().y_max() - prof.rail().y_min()) / g.dy_mm) + 1;
+  g.gap.assign(n, kNoWheel);
+  g.rail_angle.assign(n, 0.0);
+  std::vector<double> z_locus;
+  fill_locus(p, prof, pose, g, z_locus);
+  res.min_gap_mm = kNoWheel;
+  std::size_t j_min = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const CurvePoint r = prof.rail_at_track_y(g.y(j));
+    if (!r.found || z_locus[j] <= -kNoWheel) continue;
+    g.gap[j] = r.z - z_locus[j];
+    g.rail_angle[j] = std::atan(r.dz_dy);
+    if (g.gap[j] < res.min_gap_mm) {
+      res.min_gap_mm = g.gap[j];
+      j_min = j;
+    }
+  }
+  res.delta_at_min_rad = g.rail_angle[j_min];
+  if (j_min > 0 && j_min + 1 < n && g.gap[j_min - 1] < kNoWheel && g.gap[j_min + 1] < kNoWheel)
+    res.curvature_at_min =
+        0.5 * (g.gap[j_min - 1] - 2.0 * g.gap[j_min] + g.gap[j_min + 1]) / (g.dy_mm * g.dy_mm);
+  res.minimum_at_profile_end = res.min_gap_mm < kNoWheel && (j_min == 0 || j_min + 1 == n);
+
+  // Regions: maximal runs of negative gap, one guard sample on each side.
+  const double c = 1.0 / (2.0 * p.wheelset.nominal_radius_mm);
+  std::vector<ContactRegion> regions;
+  for (std::size_t j = 0; j < n;) {
+    if (!(g.gap[j] < 0.0)) {
+      ++j;
+      continue;
+    }
+    std::size_t e = j;
+    while (e + 1 < n && g.gap[e + 1] < 0.0) ++e;
+    regions.push_back(make_region(g, prof, j > 0 ? j - 1 : j, e + 1 < n ? e + 1 : e, c));
+    j = e + 1;
+  }
+  res.patches = combine(std::move(regions), p.search);
+  for (ContactRegion& r : res.patches) finish_region(r, prof);
+  if (res.patches.size() > 10) {
+    // Keep the ten deepest, then restore the lateral order.
+    std::sort(res.patches.begin(), res.patches.end(),
+              [](const ContactRegion& a, const ContactRegion& b) { return a.min_gap < b.min_gap; });
+    res.patches.resize(10);
+    std::sort(res.patches.begin(), res.patches.end(),
+              [](const ContactRegion& a, const ContactRegion& b) {
+                return a.reference.y < b.reference.y;
+              });
+  }
+  return res;
+}
+
+}  // namespace rollcontact::wheelrail

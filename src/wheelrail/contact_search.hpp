@@ -1,0 +1,50 @@
+#pragma once
+// Contact search D=2 (spec/physics.md §13.3): the contact locus of the wheel (for every lateral
+// position the wheel point whose surface normal is perpendicular to the track), the gap between
+// rail and locus on a uniform lateral grid (spacing 0.3·DS), the interpenetration regions with
+// their weighted reference points and contact angles, and their combination into patches.
+
+#include <vector>
+
+#include "rollcontact/model/wheelrail.hpp"
+#include "wheelrail/placed_profiles.hpp"
+#include "wheelrail/wheelset_pose.hpp"
+
+namespace rollcontact::wheelrail {
+
+/// The gap function on the lateral grid (track coordinates).
+struct GapFunction {
+  double y0_mm = 0.0, dy_mm = 0.0;  ///< y_j = y0 + j·dy
+  std::vector<double> gap;          ///< rail z − locus z [mm]; +huge where there is no wheel
+  std::vector<double> x_locus;      ///< x of the locus point [mm]
+  std::vector<double> rail_angle;   ///< rail surface inclination atan(dz/dy) [rad]
+  double y(std::size_t j) const { return y0_mm + dy_mm * static_cast<double>(j); }
+};
+
+/// One contact region: where the wheel and the rail interpenetrate, or a combination of them.
+struct ContactRegion {
+  std::size_t first = 0, last = 0;      ///< gap samples, one guard sample each side included
+  Vec3 reference;                       ///< weighted reference point on the rail [mm]
+  double delta_rad = 0.0;               ///< contact angle: weighted rail inclination
+  double x_min = 0.0, x_max = 0.0;      ///< longitudinal extent of the interpenetration [mm]
+  double y_min = 0.0, y_max = 0.0;      ///< lateral extent (samples first..last) [mm]
+  double z_min = 0.0, z_max = 0.0;      ///< vertical extent of the rail surface there [mm]
+  double min_gap = 0.0;                 ///< deepest interpenetration (negative) [mm]
+  double weight = 0.0;                  ///< Σ w of the samples
+  double wx = 0.0, wy = 0.0, wd = 0.0;  ///< Σ w·x_lc, Σ w·y, Σ w·α (for combination)
+};
+
+struct SearchResult {
+  GapFunction gap;
+  std::vector<ContactRegion> patches;   ///< sorted by lateral position, at most 10
+  double min_gap_mm = 0.0;              ///< smallest gap anywhere (the start of contact)
+  double delta_at_min_rad = 0.0;        ///< rail inclination where the gap is smallest
+  double curvature_at_min = 0.0;        ///< d²g/dy² / 2 there [1/mm] (lateral Hertz curvature)
+  bool minimum_at_profile_end = false;  ///< the deepest local minimum is at a rail profile end
+};
+
+/// Runs the search for the wheelset pose. No exception for a miss: no patches.
+SearchResult search_contact(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
+                            const WheelsetPose& pose);
+
+}  // namespace rollcontact::wheelrail

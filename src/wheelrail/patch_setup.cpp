@@ -1,0 +1,142 @@
+#include "wheelrail/patch_setup.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "rollcontact/errors.hpp"
+
+namespace rollcontact::wheelrail {
+
+namespace {
+
+/// No wheel above the element (the line leaves the wheel profile): never in contact.
+constexpr double kFarAway = 1e3;
+
+/// Undeformed distance per element along the local normal (ix fastest), minimum shifted to 0.
+std::vector<double> undeformed_distance(const PlacedProfiles& prof, const WheelsetPose& pose,
+                                        const ContactFrame& f, const PatchSetup& s, int mx, int my,
+                                        double& pen) {
+  std::vector<double> h(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my), kFarAway);
+  double h_min = kFarAway;
+  for (int j = 0; j < my; ++j) {
+    const Vec3 on_line = f.origin + (s.ds_mm * (s.iy0 + j)) * f.es;
+    double t_rail = 0.0;
+    if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) continue;
+    double t_wheel = t_rail;
+    for (int i = 0; i < mx; ++i) {
+      const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i)) * f.ex;
+      if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel)) {
+        t_wheel = t_rail;
+        continue;
+      }
+      const double v = t_rail - t_wheel;
+      h[static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i)] =
+          v;
+      h_min = std::min(h_min, v);
+    }
+  }
+  pen = -h_min;
+  for (double& v : h)
+    if (v < kFarAway) v -= h_min;
+  return h;
+}
+
+}  // namespace
+
+ContactFrame contact_frame(const ContactRegion& region) {
+  ContactFrame f;
+  f.origin = region.reference;
+  f.delta_rad = region.delta_rad;
+  const double c = std::cos(f.delta_rad), s = std::sin(f.delta_rad);
+  f.es = {0.0, c, s};
+  f.en = {0.0, -s, c};
+  return f;
+}
+
+PatchKinematics patch_kinematics(const model::WheelRailProblem& p, const WheelsetPose& pose,
+                                 const PlacedProfiles& prof, const ContactFrame& f, double pen_mm) {
+  const model::WheelsetState& m = p.motion;
+  const model::RailState& rs = p.rail_state;
+  // Rail material point P: rail deviation rates and the track's yaw rate in a curve.
+  const Vec3 P = f.origin;
+  const double yaw_rate_track = -m.vs_mm_s * p.track.curvature_per_mm;
+  const Vec3 omega_P{rs.vroll_rad_s, 0.0, yaw_rate_track};
+  const Vec3 rail_origin{0.0, prof.rail_y_mm(), prof.rail_z_mm()};
+  Vec3 v_P =
+      Vec3{0.0, rs.vy_mm_s, rs.vz_mm_s} + cross(Vec3{rs.vroll_rad_s, 0.0, 0.0}, P - rail_origin);
+  v_P.x += -yaw_rate_track * P.y;
+  // Wheel point Q at distance PEN along the normal (the undeformed wheel surface).
+  const Vec3 r_Q = (P + pen_mm * f.en) - pose.centre;
+  const Vec3 omega_Q = pose.rotation * Vec3{m.vroll_rad_s, m.vpitch_rad_s, m.vyaw_rad_s};
+  const Vec3 v_Q = Vec3{m.vs_mm_s, m.vy_mm_s, m.vz_mm_s} + cross(omega_Q, r_Q);
+  const double v_roll = cross(pose.rotation * Vec3{0.0, m.vpitch_rad_s, 0.0}, r_Q).x;
+  const double v_est = v_Q.x - v_P.x - v_roll;
+
+  PatchKinematics k;
+  k.veloc_mm_s = 0.5 * (std::abs(v_est) + std::abs(v_roll));
+  const bool forward = (std::abs(v_est) >= std::abs(v_roll) && v_est >= 0.0) ||
+                       (std::abs(v_roll) > std::abs(v_est) && v_roll <= 0.0);
+  k.chi_rad = forward ? 0.0 : std::numbers::pi;
+  k.dq_mm = p.search.dq_rel * p.search.dx_mm;
+  if (k.veloc_mm_s >= 1e-6) {
+    const Vec3 dv = v_P - v_Q;
+    k.xi = dot(dv, f.ex) / k.veloc_mm_s;
+    k.eta = dot(dv, f.es) / k.veloc_mm_s;
+    k.phi_per_mm = dot(omega_P - omega_Q, f.en) / k.veloc_mm_s;
+  }
+  return k;
+}
+
+PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                       const WheelsetPose& pose, const ContactRegion& region,
+                       std::vector<std::string>& warnings) {
+  PatchSetup s;
+  s.frame = contact_frame(region);
+  // Lateral extent: the region's rail arc length around the reference point.
+  const double y_r = prof.rail_y_mm();
+  const double s_ref = prof.rail().at_y(region.reference.y - y_r).s;
+  const double s_lo = prof.rail().at_y(region.y_min - y_r).s - s_ref;
+  const double s_hi = prof.rail().at_y(region.y_max - y_r).s - s_ref;
+  const double x_lo = region.x_min - region.reference.x, x_hi = region.x_max - region.reference.x;
+  s.dx_mm = p.search.dx_mm;
+  s.ds_mm = p.search.ds_mm;
+  int mx = 0, my = 0;
+  for (int doubling = 0;; ++doubling) {
+    s.ix0 = static_cast<int>(std::floor(x_lo / s.dx_mm)) - 1;
+    s.iy0 = static_cast<int>(std::floor(std::min(s_lo, s_hi) / s.ds_mm)) - 1;
+    mx = static_cast<int>(std::ceil(x_hi / s.dx_mm)) + 1 - s.ix0 + 1;
+    my = static_cast<int>(std::ceil(std::max(s_lo, s_hi) / s.ds_mm)) + 1 - s.iy0 + 1;
+    if (static_cast<long>(mx) * my < p.search.max_elements || doubling > 20) break;
+    s.dx_mm *= 2.0;
+    s.ds_mm *= 2.0;
+    warnings.push_back(fmt::format(
+        "the patch grid would have {} elements, more than NPOT_MAX = {}: DX, DS doubled to "
+        "{:g}, {:g} mm",
+        static_cast<long>(mx) * my, p.search.max_elements, s.dx_mm, s.ds_mm));
+  }
+
+  model::PatchProblem& q = s.problem;
+  q = p.patch;
+  q.potential = {};
+  q.potential.ipotcn = 1;
+  q.potential.mx = mx;
+  q.potential.my = my;
+  q.potential.values = {(s.ix0 - 0.5) * s.dx_mm, (s.iy0 - 0.5) * s.ds_mm, s.dx_mm, s.ds_mm};
+  q.gap = {};
+  q.gap.ibase = 9;
+  q.gap.iplan = 1;
+  q.gap.values = undeformed_distance(prof, pose, s.frame, s, mx, my, s.pen_mm);
+  q.normal.kind = model::NormalLoadKind::Approach;
+  q.normal.approach_mm = s.pen_mm;
+  s.kinematics = patch_kinematics(p, pose, prof, s.frame, s.pen_mm);
+  q.tangential.creepage = {s.kinematics.xi, s.kinematics.eta, s.kinematics.phi_per_mm};
+  q.rolling.direction_rad = s.kinematics.chi_rad;
+  q.rolling.step_mm = s.kinematics.dq_mm;
+  q.rolling.velocity_mm_per_s = s.kinematics.veloc_mm_s;
+  return s;
+}
+
+}  // namespace rollcontact::wheelrail

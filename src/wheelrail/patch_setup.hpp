@@ -1,0 +1,48 @@
+#pragma once
+// From a contact region to a module-3 patch problem (spec/physics.md §13.4, §13.5): the local
+// frame (origin at the reference point, turned by the contact angle δ about the track x-axis),
+// the grid of element centres at multiples of (DX, DS) covering the region, the undeformed
+// distance along the local normal, the approach, and the creepages from the kinematics.
+
+#include "rollcontact/model/patch_problem.hpp"
+#include "rollcontact/model/wheelrail.hpp"
+#include "wheelrail/contact_search.hpp"
+#include "wheelrail/frames.hpp"
+
+namespace rollcontact::wheelrail {
+
+/// The local contact frame of a patch in track coordinates.
+struct ContactFrame {
+  Vec3 origin;               ///< reference point on the rail
+  double delta_rad = 0.0;    ///< contact angle
+  Vec3 ex{1, 0, 0}, es, en;  ///< rolling direction, along the contact, normal into the rail
+};
+
+ContactFrame contact_frame(const ContactRegion& region);
+
+/// Creepages and rolling of a patch (physics.md §13.5).
+struct PatchKinematics {
+  double xi = 0.0, eta = 0.0, phi_per_mm = 0.0;
+  double chi_rad = 0.0, dq_mm = 1.0, veloc_mm_s = 1.0;
+};
+
+PatchKinematics patch_kinematics(const model::WheelRailProblem& problem, const WheelsetPose& pose,
+                                 const PlacedProfiles& profiles, const ContactFrame& frame,
+                                 double pen_mm);
+
+struct PatchSetup {
+  ContactFrame frame;
+  double dx_mm = 0.0, ds_mm = 0.0;  ///< element sizes in effect (doubled for NPOT_MAX)
+  int ix0 = 0, iy0 = 0;             ///< index of the first element centre (x = ix·dx)
+  double pen_mm = 0.0;              ///< approach: −min h
+  PatchKinematics kinematics;
+  model::PatchProblem problem;  ///< ready for PatchSolver::solve
+};
+
+/// Builds the patch problem of `region`; the grid is coarsened (DX, DS doubled) until it has
+/// fewer than NPOT_MAX elements. `warnings` receives such adjustments.
+PatchSetup setup_patch(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
+                       const WheelsetPose& pose, const ContactRegion& region,
+                       std::vector<std::string>& warnings);
+
+}  // namespace rollcontact::wheelrail

@@ -1,0 +1,100 @@
+#include "wheelrail/placed_profiles.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rollcontact::wheelrail {
+
+namespace {
+
+double rail_roll_of(const model::WheelRailProblem& p) {
+  return -p.track.cant_rad + p.rail_state.droll_rad;
+}
+
+bool same_profile(const model::WheelRailProfile& a, const model::WheelRailProfile& b) {
+  const model::ProfileSmoothing &s = a.smoothing, &t = b.smoothing;
+  return a.points.y == b.points.y && a.points.z == b.points.z && s.method == t.method &&
+         s.smooth == t.smooth && s.zigzag_threshold_rad == t.zigzag_threshold_rad &&
+         s.kink_high_rad == t.kink_high_rad && s.kink_low_rad == t.kink_low_rad &&
+         s.kink_window_mm == t.kink_window_mm && s.max_omitted_fraction == t.max_omitted_fraction;
+}
+
+/// The gauge point (physics.md §13.2): on the canted profile, among the points on the track side
+/// of the highest point that lie less than GAUGHT below it, the one furthest to the track side —
+/// at depth GAUGHT exactly when the range ends there (found on the spline), else the point where
+/// the profile turns back (vertical tangent).
+double find_gauge_point(const ProfileCurve& rail, double gaught, double& top_z) {
+  const std::vector<double>& y = rail.node_y();
+  const std::vector<double>& z = rail.node_z();
+  const std::size_t top =
+      static_cast<std::size_t>(std::min_element(z.begin(), z.end()) - z.begin());
+  top_z = z[top];
+  const double depth = top_z + gaught;
+  double y_min = y[top];
+  for (std::size_t i = top; i-- > 0;) {
+    if (z[i] > depth) {
+      // Crossing between nodes i and i+1: bisection on the spline parameter.
+      double lo = rail.node_s()[i], hi = rail.node_s()[i + 1];
+      const CurvePoint a = rail.at_s(lo);
+      if (a.z < depth) return std::min(y_min, a.y);  // not a crossing after all
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (rail.at_s(mid).z > depth ? lo : hi) = mid;
+      }
+      return std::min(y_min, rail.at_s(0.5 * (lo + hi)).y);
+    }
+    y_min = std::min(y_min, y[i]);
+  }
+  return y_min;
+}
+
+}  // namespace
+
+PlacedProfiles::PlacedProfiles(const model::WheelRailProblem& p)
+    : rail_profile_(p.rail),
+      wheel_profile_(p.wheel),
+      rail_roll_(rail_roll_of(p)),
+      gauge_height_(p.track.gauge_height_mm),
+      ytape_(p.wheelset.tape_circle_y_mm),
+      rail_(p.rail, true, rail_roll_of(p), 0.0, 0.0),
+      wheel_(p.wheel, false) {
+  if (gauge_height_ > 0.0) {
+    gauge_y_ = find_gauge_point(rail_, gauge_height_, rail_top_z_);
+  } else {
+    const auto& z = rail_.node_z();
+    rail_top_z_ = *std::min_element(z.begin(), z.end());
+  }
+  if (std::abs(ytape_) < 999.0) {
+    const CurvePoint t = wheel_.at_y(ytape_);
+    if (t.found) z_tape_ = t.z;
+  }
+  place(p);
+}
+
+bool PlacedProfiles::same_curves(const model::WheelRailProblem& p) const {
+  return rail_roll_of(p) == rail_roll_ && p.track.gauge_height_mm == gauge_height_ &&
+         p.wheelset.tape_circle_y_mm == ytape_ && same_profile(p.rail, rail_profile_) &&
+         same_profile(p.wheel, wheel_profile_);
+}
+
+void PlacedProfiles::place(const model::WheelRailProblem& p) {
+  if (gauge_y_) {
+    rail_y_ = 0.5 * p.track.gauge_width_mm - *gauge_y_ + p.rail_state.dy_mm;
+    rail_z_ = -rail_top_z_ + p.rail_state.dz_mm;
+  } else {
+    rail_y_ = p.track.rail_y0_mm + p.rail_state.dy_mm;
+    rail_z_ = p.track.rail_z0_mm + p.rail_state.dz_mm;
+  }
+  const model::WheelsetGeometry& w = p.wheelset;
+  wheel_y_offset_ = 0.5 * w.flange_back_distance_mm - w.flange_back_position_mm;
+  wheel_r0_ = w.nominal_radius_mm - z_tape_;
+}
+
+CurvePoint PlacedProfiles::rail_at_track_y(double y) const {
+  CurvePoint c = rail_.at_y(y - rail_y_);
+  c.y = y;
+  c.z += rail_z_;
+  return c;
+}
+
+}  // namespace rollcontact::wheelrail

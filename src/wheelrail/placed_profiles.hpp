@@ -1,0 +1,52 @@
+#pragma once
+// The rail and wheel profiles as curves, placed (spec/physics.md §13.2): the rail rotated by its
+// roll (−CANT + DROLLR) and shifted to its gauge-point or absolute position in the track, the
+// wheel profile's origin on the wheelset (FBDIST, FBPOS, NOMRADW, YTAPE). Building the curves is
+// the expensive part; it is done once per profile pair and rail roll and reused while they stay
+// the same (same_curves()).
+
+#include <optional>
+
+#include "rollcontact/model/wheelrail.hpp"
+#include "wheelrail/profile_curve.hpp"
+
+namespace rollcontact::wheelrail {
+
+class PlacedProfiles {
+ public:
+  explicit PlacedProfiles(const model::WheelRailProblem& problem);
+
+  /// True when `problem` has the same profiles, smoothing, rail roll and tape circle, so that
+  /// the curves can be reused (the shifts are recomputed by place()).
+  bool same_curves(const model::WheelRailProblem& problem) const;
+  /// Sets the rail's and wheel's offsets for `problem` (cheap).
+  void place(const model::WheelRailProblem& problem);
+
+  /// The rail profile rotated by its roll, origin not shifted; track y = rail_y + curve y.
+  const ProfileCurve& rail() const noexcept { return rail_; }
+  const ProfileCurve& wheel() const noexcept { return wheel_; }
+  double rail_y_mm() const noexcept { return rail_y_; }
+  double rail_z_mm() const noexcept { return rail_z_; }
+  double rail_roll_rad() const noexcept { return rail_roll_; }
+  /// Rail height z [mm, down] and slope dz/dy at track position y (found = false outside).
+  CurvePoint rail_at_track_y(double y) const;
+  /// Wheel-profile y of the wheelset-frame lateral coordinate: y_p = y_ws − offset.
+  double wheel_y_offset_mm() const noexcept { return wheel_y_offset_; }
+  /// Radius of the wheel at profile z: r = r0 + z, r0 = NOMRADW − z_w(YTAPE).
+  double wheel_r0_mm() const noexcept { return wheel_r0_; }
+  /// The gauge point of the canted rail in profile coordinates (GAUGHT > 0).
+  std::optional<double> gauge_y_mm() const noexcept { return gauge_y_; }
+  double rail_top_z_mm() const noexcept { return rail_top_z_; }
+
+ private:
+  model::WheelRailProfile rail_profile_, wheel_profile_;
+  double rail_roll_ = 0.0, gauge_height_ = 0.0, ytape_ = 0.0;
+  ProfileCurve rail_, wheel_;
+  std::optional<double> gauge_y_;
+  double rail_top_z_ = 0.0;
+  double z_tape_ = 0.0;
+  double rail_y_ = 0.0, rail_z_ = 0.0;
+  double wheel_y_offset_ = 0.0, wheel_r0_ = 0.0;
+};
+
+}  // namespace rollcontact::wheelrail

@@ -1,0 +1,104 @@
+#include "wheelrail/vertical_force.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rollcontact::wheelrail {
+
+namespace {
+
+/// Power-law model through the patches of a sample: F_z(z) and dF_z/dz.
+struct PowerLaw {
+  std::vector<double> z0, c, f;  ///< start of contact, C_i, (cos δ + f_s sin δ)·C_i factor
+  std::vector<double> cosd;
+
+  explicit PowerLaw(const HeightSample& s) {
+    for (const PatchForceSample& p : s.patches) {
+      if (!(p.pen_mm > 0.0) || !(p.fn_N > 0.0)) continue;
+      const double cd = std::max(std::cos(p.delta_rad), 0.05);
+      const double ci = p.fn_N / std::pow(p.pen_mm, 1.5);
+      const double fs = p.fs_N / p.fn_N;
+      z0.push_back(s.z_mm - p.pen_mm / cd);
+      cosd.push_back(cd);
+      c.push_back(ci);
+      f.push_back((cd + fs * std::sin(p.delta_rad)) * ci);
+    }
+  }
+  bool usable() const { return !z0.empty(); }
+  void eval(double z, double& fz, double& dfz) const {
+    fz = dfz = 0.0;
+    for (std::size_t i = 0; i < z0.size(); ++i) {
+      const double pen = (z - z0[i]) * cosd[i];
+      if (pen <= 0.0) continue;
+      fz += f[i] * std::pow(pen, 1.5);
+      dfz += 1.5 * f[i] * std::sqrt(pen) * cosd[i];
+    }
+  }
+  /// Newton on the model for F_z = target, starting at z.
+  double solve(double target, double z) const {
+    double lowest = *std::min_element(z0.begin(), z0.end());
+    z = std::max(z, lowest + 1e-6);
+    for (int it = 0; it < 50; ++it) {
+      double fz = 0.0, dfz = 0.0;
+      eval(z, fz, dfz);
+      if (dfz <= 0.0) {
+        z = lowest + 1e-3;
+        continue;
+      }
+      const double dz = (target - fz) / dfz;
+      z = std::max(z + dz, lowest + 0.5 * (z - lowest));
+      if (std::abs(target - fz) < 1e-3) break;
+    }
+    return z;
+  }
+};
+
+}  // namespace
+
+VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double start_mm,
+                                         double first_guess_mm,
+                                         const std::function<HeightSample(double)>& solve_at) {
+  VerticalForceResult res;
+  res.trace.push_back({0, start_mm, 0.0, 0.0});
+  double lo = start_mm, hi = std::numeric_limits<double>::infinity();  // F(lo) < FZ < F(hi)
+  double z = first_guess_mm;
+  double prev_z = start_mm;
+  const double f_tol = std::max(st.tolerance * st.target_N, 1e-9);
+  for (int it = 1; it <= std::max(st.max_iterations, 1); ++it) {
+    const HeightSample s = solve_at(z);
+    const PowerLaw model(s);
+    double model_f = 0.0, slope = 0.0;
+    if (model.usable()) model.eval(z, model_f, slope);
+    res.trace.push_back({it, z, s.fz_N, slope});
+    res.z_mm = z;
+    if (!std::isfinite(s.fz_N)) {
+      res.message = fmt::format("the vertical force is not finite at z_ws = {:g} mm", z);
+      return res;
+    }
+    const double residual = s.fz_N - st.target_N;
+    if (std::abs(residual) < f_tol) {
+      res.converged = true;
+      return res;
+    }
+    if (it > 1 && std::abs(z - prev_z) < st.tolerance) {
+      res.converged = true;
+      res.message = fmt::format("stopped on |dz| < EPS with FZ - target = {:.4g} N", residual);
+      return res;
+    }
+    (residual < 0.0 ? lo : hi) = z;
+    double next = model.usable() ? model.solve(st.target_N, z) : 2.0 * z - lo + 1e-3;
+    const bool bracketed = std::isfinite(hi);
+    if (!(next > lo) || (bracketed && !(next < hi)))
+      next = bracketed ? 0.5 * (lo + hi) : z + 2.0 * (z - lo) + 1e-3;
+    prev_z = z;
+    z = next;
+  }
+  res.message = fmt::format("the vertical force did not converge in MAXNR = {} iterations",
+                            st.max_iterations);
+  return res;
+}
+
+}  // namespace rollcontact::wheelrail

@@ -1,0 +1,49 @@
+#pragma once
+// The vertical-force iteration (N=1, spec/physics.md §13.7, spec-additions §A4): the wheelset
+// height z_ws at which the vertical force on the rail equals FZ. Iterate 0 is geometry only (the
+// height at which contact starts); iterate 1 a Hertz estimate; then proposals of a power-law
+// model of every patch (F_n,i = C_i·pen_i^1.5) inside a bracket that shrinks with every full
+// solve, with bisection as the fall-back.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rollcontact/wheelrail.hpp"
+
+namespace rollcontact::wheelrail {
+
+/// What a full solve at one height says about each patch, for the power-law model.
+struct PatchForceSample {
+  double pen_mm = 0.0;     ///< approach of the patch
+  double delta_rad = 0.0;  ///< contact angle
+  double fn_N = 0.0, fs_N = 0.0;
+};
+
+struct HeightSample {
+  double z_mm = 0.0;
+  double fz_N = 0.0;  ///< vertical force on the rail at this height
+  std::vector<PatchForceSample> patches;
+};
+
+struct VerticalForceSettings {
+  double target_N = 0.0;
+  double tolerance = 1e-5;  ///< EPS: relative on the force, absolute [mm] on steps of z
+  int max_iterations = 30;  ///< MAXNR
+};
+
+struct VerticalForceResult {
+  double z_mm = 0.0;
+  bool converged = false;
+  std::string message;
+  std::vector<VerticalForceStep> trace;
+};
+
+/// `start_mm`: the height where contact starts (iterate 0), `first_guess_mm` the Hertz estimate.
+/// `solve_at(z)` runs the full contact problem and returns the forces; the last call is the one
+/// whose results stand.
+VerticalForceResult solve_vertical_force(const VerticalForceSettings& settings, double start_mm,
+                                         double first_guess_mm,
+                                         const std::function<HeightSample(double)>& solve_at);
+
+}  // namespace rollcontact::wheelrail

@@ -1,0 +1,51 @@
+#include "wheelrail/wheelset_pose.hpp"
+
+#include <cmath>
+
+namespace rollcontact::wheelrail {
+
+WheelsetPose pose_of(const model::WheelRailProblem& p, double z_ws_mm) {
+  WheelsetPose pose;
+  pose.rotation = roll_yaw_rotation(p.motion.roll_rad, p.motion.yaw_rad);
+  pose.centre = {0.0, p.motion.y_mm, z_ws_mm - p.wheelset.nominal_radius_mm};
+  return pose;
+}
+
+bool wheel_surface_along(const PlacedProfiles& profiles, const WheelsetPose& pose, Vec3 from,
+                         Vec3 dir, double t0, double& t) {
+  // f(t) = ρ(t) − r(y_p(t)): distance from the axle minus the wheel radius at that section.
+  const Vec3 q0 = pose.rotation.transposed_times(from - pose.centre);
+  const Vec3 dq = pose.rotation.transposed_times(dir);
+  const double y_off = profiles.wheel_y_offset_mm(), r0 = profiles.wheel_r0_mm();
+  t = t0;
+  for (int it = 0; it < 30; ++it) {
+    const Vec3 q = q0 + t * dq;
+    const CurvePoint w = profiles.wheel().at_y(q.y - y_off);
+    if (!w.found) return false;
+    const double rho = std::hypot(q.x, q.z);
+    const double f = rho - (r0 + w.z);
+    const double df = (q.x * dq.x + q.z * dq.z) / rho - w.dz_dy * dq.y;
+    if (df == 0.0 || !std::isfinite(df)) return false;
+    const double step = f / df;
+    t -= step;
+    if (std::abs(step) < 1e-11) return true;
+  }
+  return false;
+}
+
+bool rail_surface_along(const PlacedProfiles& profiles, Vec3 from, Vec3 dir, double t0, double& t) {
+  t = t0;
+  for (int it = 0; it < 30; ++it) {
+    const CurvePoint r = profiles.rail_at_track_y(from.y + t * dir.y);
+    if (!r.found) return false;
+    const double f = r.z - (from.z + t * dir.z);
+    const double df = r.dz_dy * dir.y - dir.z;
+    if (df == 0.0 || !std::isfinite(df)) return false;
+    const double step = f / df;
+    t -= step;
+    if (std::abs(step) < 1e-11) return true;
+  }
+  return false;
+}
+
+}  // namespace rollcontact::wheelrail

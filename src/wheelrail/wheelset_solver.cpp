@@ -1,0 +1,235 @@
+// WheelsetSolver: profiles → placement → contact search → patch problems → PatchSolver per patch
+// → totals, inside the vertical-force iteration when FZ is prescribed (spec/physics.md §13).
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <optional>
+
+#include "geometry/hertz.hpp"
+#include "rollcontact/errors.hpp"
+#include "rollcontact/wheelrail.hpp"
+#include "wheelrail/contact_search.hpp"
+#include "wheelrail/patch_setup.hpp"
+#include "wheelrail/placed_profiles.hpp"
+#include "wheelrail/vertical_force.hpp"
+#include "wheelrail/wheelset_pose.hpp"
+
+namespace rollcontact {
+
+using wheelrail::ContactRegion;
+using wheelrail::PatchSetup;
+using wheelrail::PlacedProfiles;
+using wheelrail::SearchResult;
+using wheelrail::Vec3;
+using wheelrail::WheelsetPose;
+
+struct WheelsetSolver::Impl {
+  SolveOptions options;
+  std::optional<PlacedProfiles> profiles;
+  std::vector<PatchSolver> patch_solvers;  ///< one per patch position (cached operators)
+
+  const PlacedProfiles& profiles_for(const model::WheelRailProblem& p) {
+    if (!profiles || !profiles->same_curves(p)) profiles.emplace(p);
+    profiles->place(p);
+    return *profiles;
+  }
+
+  PatchSolver& solver_for(std::size_t k) {
+    while (patch_solvers.size() <= k) patch_solvers.emplace_back(options);
+    return patch_solvers[k];
+  }
+
+  /// Everything at one wheelset height.
+  WheelRailSolution solve_at(const model::WheelRailProblem& p, double z_ws, bool check_ends);
+};
+
+namespace {
+
+Vector3 to_public(Vec3 v) {
+  return {v.x, v.y, v.z};
+}
+
+/// Combined contact modulus E* = G/(1 − ν) of the two bodies (physics.md §3.1).
+double contact_modulus(const model::Bodies& b) {
+  const double inv_g =
+      0.5 * (1.0 / b.body1.shear_modulus_N_mm2 + 1.0 / b.body2.shear_modulus_N_mm2);
+  const double nu_g = 0.5 * (b.body1.poisson_ratio / b.body1.shear_modulus_N_mm2 +
+                             b.body2.poisson_ratio / b.body2.shear_modulus_N_mm2);
+  const double g = 1.0 / inv_g, nu = nu_g * g;
+  return g / (1.0 - nu);
+}
+
+WheelRailPatch describe_patch(const PlacedProfiles& prof, const WheelsetPose& pose,
+                              const PatchSetup& s, Solution sol) {
+  WheelRailPatch w;
+  const Vec3 ref = s.frame.origin;
+  const double d = s.frame.delta_rad;
+  w.reference_tr = to_public(ref);
+  w.contact_angle_rad = d;
+  // Rail-profile coordinates: undo the rail's shift and roll.
+  const double ry = ref.y - prof.rail_y_mm(), rz = ref.z - prof.rail_z_mm();
+  const double a = prof.rail_roll_rad();
+  w.y_rail_mm = std::cos(a) * ry + std::sin(a) * rz;
+  w.z_rail_mm = -std::sin(a) * ry + std::cos(a) * rz;
+  const Vec3 q = pose.rotation.transposed_times(ref - pose.centre);
+  w.reference_wheel = {q.x, q.y - prof.wheel_y_offset_mm(), q.z - prof.wheel_r0_mm()};
+  w.xi = s.kinematics.xi;
+  w.eta = s.kinematics.eta;
+  w.phi_per_mm = s.kinematics.phi_per_mm;
+  w.chi_rad = s.kinematics.chi_rad;
+  w.dq_mm = s.kinematics.dq_mm;
+  w.veloc_mm_s = s.kinematics.veloc_mm_s;
+  w.dx_mm = s.dx_mm;
+  w.ds_mm = s.ds_mm;
+  const double fn = sol.totals.fn, fx = sol.totals.fx, fs = sol.totals.fy;
+  const Vec3 f_tr{fx, fs * std::cos(d) - fn * std::sin(d), fn * std::cos(d) + fs * std::sin(d)};
+  w.force_tr = to_public(f_tr);
+  w.force_ws = to_public(pose.rotation.transposed_times(f_tr));
+  w.solution = std::move(sol);
+  return w;
+}
+
+/// A left wheel is computed as a right one; its lateral components change sign.
+void mirror_to_left(WheelRailSolution& s) {
+  auto flip = [](Vector3& v) { v.y = -v.y; };
+  flip(s.force_tr);
+  flip(s.force_ws);
+  for (WheelRailPatch& w : s.patches) {
+    flip(w.reference_tr);
+    flip(w.reference_wheel);
+    flip(w.force_tr);
+    flip(w.force_ws);
+    w.contact_angle_rad = -w.contact_angle_rad;
+    w.y_rail_mm = -w.y_rail_mm;
+    w.eta = -w.eta;
+    w.phi_per_mm = -w.phi_per_mm;
+    Totals& t = w.solution.totals;
+    t.fy = -t.fy;
+    t.mz = -t.mz;
+    t.creep_y = -t.creep_y;
+    t.spin = -t.spin;
+  }
+}
+
+}  // namespace
+
+WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& p, double z_ws,
+                                                 bool check_ends) {
+  const PlacedProfiles& prof = profiles_for(p);
+  const WheelsetPose pose = wheelrail::pose_of(p, z_ws);
+  const SearchResult search = wheelrail::search_contact(p, prof, pose);
+  if (check_ends && !search.patches.empty() && search.minimum_at_profile_end)
+    throw GeometryError(
+        "the deepest interpenetration lies at an end of the rail profile: the wheel is misplaced "
+        "on the rail (check Y_WS, the gauge and the profiles' orientation)");
+  WheelRailSolution out;
+  out.z_ws_mm = z_ws;
+  Vec3 total_tr{}, total_ws{};
+  for (std::size_t k = 0; k < search.patches.size(); ++k) {
+    PatchSetup setup = wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings);
+    Solution sol = solver_for(k).solve(setup.problem);
+    if (!sol.solver.converged) {
+      out.converged = false;
+      out.message = fmt::format("patch {}: {}", k + 1, sol.solver.message);
+    }
+    WheelRailPatch w = describe_patch(prof, pose, setup, std::move(sol));
+    total_tr = total_tr + Vec3{w.force_tr.x, w.force_tr.y, w.force_tr.z};
+    total_ws = total_ws + Vec3{w.force_ws.x, w.force_ws.y, w.force_ws.z};
+    out.patches.push_back(std::move(w));
+  }
+  out.force_tr = to_public(total_tr);
+  out.force_ws = to_public(total_ws);
+  return out;
+}
+
+WheelsetSolver::WheelsetSolver(SolveOptions options) : impl_(std::make_unique<Impl>()) {
+  impl_->options = options;
+}
+WheelsetSolver::~WheelsetSolver() = default;
+WheelsetSolver::WheelsetSolver(WheelsetSolver&&) noexcept = default;
+WheelsetSolver& WheelsetSolver::operator=(WheelsetSolver&&) noexcept = default;
+
+namespace {
+
+/// A left wheel's inputs are given in its mirrored frame (y towards its field side); the
+/// geometry is computed for a right wheel, so the lateral inputs change sign here and the
+/// lateral outputs in mirror_to_left().
+model::WheelRailProblem as_right_side(model::WheelRailProblem p) {
+  if (p.side != model::WheelSide::Left) return p;
+  model::WheelsetState& m = p.motion;
+  m.y_mm = -m.y_mm;
+  m.roll_rad = -m.roll_rad;
+  m.yaw_rad = -m.yaw_rad;
+  m.vy_mm_s = -m.vy_mm_s;
+  m.vroll_rad_s = -m.vroll_rad_s;
+  m.vyaw_rad_s = -m.vyaw_rad_s;
+  model::RailState& r = p.rail_state;
+  r.dy_mm = -r.dy_mm;
+  r.droll_rad = -r.droll_rad;
+  r.vy_mm_s = -r.vy_mm_s;
+  r.vroll_rad_s = -r.vroll_rad_s;
+  p.track.rail_y0_mm = -p.track.rail_y0_mm;
+  p.track.curvature_per_mm = -p.track.curvature_per_mm;
+  return p;
+}
+
+}  // namespace
+
+WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
+  const model::WheelRailProblem p = as_right_side(problem);
+  WheelRailSolution result;
+  if (p.vertical == model::VerticalLoading::Position) {
+    result = impl_->solve_at(p, p.motion.z_mm, p.first_of_sequence);
+  } else {
+    // Iterate 0: geometry only, at z_ws = 0: contact starts at the smallest gap.
+    const PlacedProfiles& prof = impl_->profiles_for(p);
+    const SearchResult s0 = wheelrail::search_contact(p, prof, wheelrail::pose_of(p, 0.0));
+    if (!(s0.min_gap_mm < 1e20)) {
+      result.converged = false;
+      result.message = "the wheel and rail profiles do not overlap laterally: no contact possible";
+      return result;
+    }
+    const double z0 = s0.min_gap_mm;
+    // Iterate 1: Hertz with the wheel's rolling curvature and the gap's lateral curvature.
+    const double a1 = 1.0 / (2.0 * p.wheelset.nominal_radius_mm);
+    const double b1 = std::max(s0.curvature_at_min, 1e-4);
+    double pen = 0.0;
+    try {
+      pen = geometry::hertz_from_curvatures(a1, b1, geometry::HertzLoad::Force, p.motion.fz_N,
+                                            contact_modulus(p.patch.bodies))
+                .pen;
+    } catch (const Error&) {
+      pen = 0.01;
+    }
+    const double z1 = z0 + pen / std::max(0.5, std::cos(s0.delta_at_min_rad));
+    wheelrail::VerticalForceSettings st;
+    st.target_N = p.motion.fz_N;
+    st.tolerance = p.patch.solver.tolerance;
+    st.max_iterations = p.patch.solver.max_newton_iterations;
+    bool first = p.first_of_sequence;
+    auto at = [&](double z) {
+      result = impl_->solve_at(p, z, first);
+      first = false;
+      wheelrail::HeightSample h;
+      h.z_mm = z;
+      h.fz_N = result.force_tr.z;
+      for (const WheelRailPatch& w : result.patches)
+        h.patches.push_back({w.solution.totals.pen, w.contact_angle_rad, w.solution.totals.fn,
+                             w.solution.totals.fy});
+      return h;
+    };
+    const wheelrail::VerticalForceResult vf = wheelrail::solve_vertical_force(st, z0, z1, at);
+    result.trace = vf.trace;
+    if (!vf.converged) {
+      result.converged = false;
+      result.message = vf.message;
+    } else if (!vf.message.empty()) {
+      result.warnings.push_back(vf.message);
+    }
+  }
+  if (problem.side == model::WheelSide::Left) mirror_to_left(result);
+  return result;
+}
+
+}  // namespace rollcontact

@@ -1,0 +1,164 @@
+// The wheel/rail solver on geometries with known answers: a cylindrical wheel on a crowned rail
+// is a Hertzian contact (A = 1/(2 R_w), B = 1/(2 R_r)); the contact point sits where the rail's
+// slope matches the wheel's; a conical wheel with YTAPE rolls without creepage at its tape circle;
+// a left wheel is the mirror image of a right one.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/hertz.hpp"
+#include "rollcontact/wheelrail.hpp"
+#include "wheelrail/placed_profiles.hpp"
+#include "wheelrail_problems.hpp"
+
+namespace rollcontact {
+namespace {
+
+constexpr double kEstar = 82000.0 / (1.0 - 0.28);  // G/(1−ν), equal bodies
+
+TEST(WheelsetSolver, CylindricalWheelOnCrownedRailIsHertzian) {
+  const double r_rail = 300.0, r_wheel = 460.0, pen = 0.05;
+  model::WheelRailProblem p = test_support::crowned_rail_problem(r_rail);
+  p.motion.z_mm = pen;  // the wheel's lowest point touches the rail crown at z_ws = 0
+  WheelsetSolver solver;
+  const WheelRailSolution s = solver.solve(p);
+  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_EQ(s.patches.size(), 1u);
+  const WheelRailPatch& w = s.patches[0];
+  EXPECT_NEAR(w.reference_tr.y, 750.0, 1e-6);
+  EXPECT_NEAR(w.contact_angle_rad, 0.0, 1e-9);
+  EXPECT_NEAR(w.solution.totals.pen, pen, 1e-9);
+  const HertzReport h = geometry::hertz_from_curvatures(0.5 / r_wheel, 0.5 / r_rail,
+                                                        geometry::HertzLoad::Approach, pen, kEstar);
+  // 0.2 mm elements over semi-axes of about 4.2 and 3.4 mm: the discrete FN is within 1 % of
+  // Hertz (the module-3 Hertz tests show the same convergence).
+  EXPECT_NEAR(w.solution.totals.fn, h.fn, 0.01 * h.fn);
+  EXPECT_NEAR(w.solution.totals.pmax, h.pmax, 0.02 * h.pmax);
+  EXPECT_NEAR(s.force_tr.z, w.solution.totals.fn, 1e-9 * h.fn);
+}
+
+TEST(WheelsetSolver, PrescribedForceFindsTheHertzianApproach) {
+  // A cylindrical wheel stays on the crown wherever the wheelset is; with FZ prescribed the
+  // iteration finds the height at which the patch carries 20 kN, and the approach is Hertz's.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+  p.motion.y_mm = 2.0;
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 20000.0;
+  WheelsetSolver solver;
+  const WheelRailSolution s = solver.solve(p);
+  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_EQ(s.patches.size(), 1u);
+  const WheelRailPatch& w = s.patches[0];
+  EXPECT_NEAR(w.reference_tr.y, 750.0, 1e-6);
+  EXPECT_NEAR(s.force_tr.z, 20000.0, 20000.0 * 1e-5 * 1.01);
+  const double fn = w.solution.totals.fn;
+  const HertzReport h = geometry::hertz_from_curvatures(0.5 / 460.0, 0.5 / 300.0,
+                                                        geometry::HertzLoad::Force, fn, kEstar);
+  EXPECT_NEAR(w.solution.totals.pen, h.pen, 0.01 * h.pen);
+  EXPECT_NEAR(s.z_ws_mm, w.solution.totals.pen, 1e-9);  // contact starts at z_ws = 0
+  // The trace starts with the geometry-only iterate at the start of contact and ends at the
+  // height used.
+  ASSERT_GE(s.trace.size(), 2u);
+  EXPECT_EQ(s.trace.front().iteration, 0);
+  EXPECT_NEAR(s.trace.front().z_ws_mm, 0.0, 1e-12);
+  EXPECT_EQ(s.trace.back().z_ws_mm, s.z_ws_mm);
+}
+
+TEST(WheelsetSolver, ContactSitsWhereTheRailSlopeMatchesTheCone) {
+  // A cone of slope 0.05 touches the crown where the rail's inclination is −atan(0.05): at
+  // rail-profile y = −300·sin(atan 0.05); the contact angle is that inclination.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0, 0.05);
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 10000.0;
+  WheelsetSolver solver;
+  const WheelRailSolution s = solver.solve(p);
+  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_EQ(s.patches.size(), 1u);
+  const double alpha = std::atan(0.05);
+  EXPECT_NEAR(s.patches[0].contact_angle_rad, -alpha, 1e-5);
+  EXPECT_NEAR(s.patches[0].y_rail_mm, -300.0 * std::sin(alpha), 2e-3);
+  // Forces on the rail: FZ balances, FY is the normal force's lateral part (frictionless).
+  const double fn = s.patches[0].solution.totals.fn;
+  EXPECT_NEAR(s.force_tr.y, fn * std::sin(alpha), 1e-6 * fn);
+}
+
+TEST(WheelsetSolver, ConicalWheelRollsFreelyAtItsTapeCircle) {
+  // z_w = −0.05·y: the radius falls towards the field side. YTAPE = 10 mm shifts the profile so
+  // that the radius at y = 10 is NOMRADW; with VPITCH = −VS/NOMRADW and the contact at y = 10
+  // the longitudinal creepage vanishes (up to the approach over the radius, 1e-4).
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0, 0.05);
+  p.wheelset.tape_circle_y_mm = 10.0;
+  // The contact point (rail slope = cone slope) under wheel-profile y = 10.
+  p.track.rail_y0_mm = 760.0 + 300.0 * std::sin(std::atan(0.05));
+  p.track.rail_z0_mm = 0.0;
+  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 10000.0;
+  const wheelrail::PlacedProfiles placed(p);
+  EXPECT_NEAR(placed.wheel_r0_mm() + placed.wheel().at_y(10.0).z, 460.0, 1e-12);
+  WheelsetSolver solver;
+  const WheelRailSolution s = solver.solve(p);
+  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_EQ(s.patches.size(), 1u);
+  const WheelRailPatch& w = s.patches[0];
+  EXPECT_NEAR(w.reference_wheel.y, 10.0, 2e-3);
+  // The rolling radius at the contact is NOMRADW up to the approach: ξ ≈ pen/460 (< 1e-4),
+  // against ±1e-3 for half a millimetre of radius.
+  EXPECT_NEAR(w.xi, 0.0, 1.1 * w.solution.totals.pen / 460.0);
+  // Without YTAPE the radius at y = 10 is NOMRADW − 0.5 and ξ shifts by 0.5/460.
+  model::WheelRailProblem q = p;
+  q.wheelset.tape_circle_y_mm = 1000.0;
+  WheelsetSolver other;
+  const WheelRailSolution t = other.solve(q);
+  ASSERT_EQ(t.patches.size(), 1u);
+  EXPECT_NEAR(t.patches[0].xi - w.xi, -0.5 / 460.0, 2e-6);
+}
+
+TEST(WheelsetSolver, LeftWheelIsTheMirrorImageOfTheRightOne) {
+  model::WheelRailProblem right = test_support::crowned_rail_problem(300.0, 0.05);
+  right.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  right.vertical = model::VerticalLoading::Force;
+  right.motion.fz_N = 10000.0;
+  right.motion.y_mm = 1.5;
+  right.motion.yaw_rad = 0.004;
+  right.motion.vy_mm_s = 3.0;
+  model::WheelRailProblem left = right;
+  left.side = model::WheelSide::Left;
+  left.motion.y_mm = -right.motion.y_mm;
+  left.motion.yaw_rad = -right.motion.yaw_rad;
+  left.motion.vy_mm_s = -right.motion.vy_mm_s;
+  left.track.rail_y0_mm = -right.track.rail_y0_mm;  // inputs are track coordinates
+  WheelsetSolver a, b;
+  const WheelRailSolution r = a.solve(right), l = b.solve(left);
+  ASSERT_EQ(r.patches.size(), 1u);
+  ASSERT_EQ(l.patches.size(), 1u);
+  EXPECT_EQ(l.force_tr.x, r.force_tr.x);
+  EXPECT_EQ(l.force_tr.y, -r.force_tr.y);
+  EXPECT_EQ(l.force_tr.z, r.force_tr.z);
+  EXPECT_EQ(l.z_ws_mm, r.z_ws_mm);
+  const WheelRailPatch &pl = l.patches[0], &pr = r.patches[0];
+  EXPECT_EQ(pl.reference_tr.y, -pr.reference_tr.y);
+  EXPECT_EQ(pl.contact_angle_rad, -pr.contact_angle_rad);
+  EXPECT_EQ(pl.xi, pr.xi);
+  EXPECT_EQ(pl.eta, -pr.eta);
+  EXPECT_EQ(pl.phi_per_mm, -pr.phi_per_mm);
+  EXPECT_EQ(pl.solution.totals.fy, -pr.solution.totals.fy);
+  EXPECT_EQ(pl.solution.totals.mz, -pr.solution.totals.mz);
+  EXPECT_NE(pr.eta, 0.0);  // the case has lateral creepage to mirror
+}
+
+TEST(WheelsetSolver, NoOverlapIsReportedNotSilent) {
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+  p.track.rail_y0_mm = 2000.0;  // the rail lies far beyond the wheel
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 10000.0;
+  WheelsetSolver solver;
+  const WheelRailSolution s = solver.solve(p);
+  EXPECT_FALSE(s.converged);
+  EXPECT_TRUE(s.patches.empty());
+  EXPECT_NE(s.message.find("do not overlap"), std::string::npos) << s.message;
+}
+
+}  // namespace
+}  // namespace rollcontact
