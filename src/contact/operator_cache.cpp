@@ -10,9 +10,11 @@ OperatorCache::OperatorCache(ops::FftChoice fft, OperatorCacheCapacity capacity)
       tangential_(capacity.tangential),
       coarse_steady_(capacity.coarse_steady) {}
 
-NormalOperators& OperatorCache::normal(const Grid& grid, const CombinedMaterial& material) {
-  return normal_.get({grid, material}, case_number_, [&](NormalOperators& e) {
-    ops::assemble_normal(e, grid, material, fft_);
+NormalOperators& OperatorCache::normal(const Grid& grid, const CombinedMaterial& material,
+                                       elastic::InteractionPtr interaction) {
+  const OperatorKey key{grid, material, model::TangentialKind::None, 0.0, 0.0, interaction};
+  return normal_.get(key, case_number_, [&](NormalOperators& e) {
+    ops::assemble_normal(e, grid, material, fft_, interaction);
     e.preconditioner = std::make_unique<normal::CirculantPreconditioner>(
         grid, material, fft_.backend, fft_.planning);
   });
@@ -20,12 +22,14 @@ NormalOperators& OperatorCache::normal(const Grid& grid, const CombinedMaterial&
 
 TangentialOperators& OperatorCache::tangential(const Grid& grid, const CombinedMaterial& material,
                                                model::TangentialKind kind, double shift_x_mm,
-                                               double shift_y_mm) {
+                                               double shift_y_mm,
+                                               elastic::InteractionPtr interaction) {
   const ops::TangentialLoadingKey loading =
       ops::tangential_loading_key(kind, shift_x_mm, shift_y_mm);
-  const OperatorKey key{grid, material, loading.kind, loading.shift_x, loading.shift_y};
+  const OperatorKey key{grid,       material, loading.kind, loading.shift_x, loading.shift_y,
+                        interaction};
   return tangential_.get(key, case_number_, [&](TangentialOperators& e) {
-    ops::assemble_tangential(e, grid, material, kind, shift_x_mm, shift_y_mm, fft_);
+    ops::assemble_tangential(e, grid, material, kind, shift_x_mm, shift_y_mm, fft_, interaction);
     e.preconditioner = std::make_unique<tangential::TangentialPreconditioner>(e.c_xx, e.c_xy,
                                                                               e.c_yy, fft_.backend);
   });
@@ -34,8 +38,8 @@ TangentialOperators& OperatorCache::tangential(const Grid& grid, const CombinedM
 CoarseSteadyOperators& OperatorCache::coarse_steady(const Grid& grid,
                                                     const CombinedMaterial& material,
                                                     double shift_x_mm, double shift_y_mm) {
-  const OperatorKey key{grid, material, model::TangentialKind::SteadyRolling, shift_x_mm,
-                        shift_y_mm};
+  const OperatorKey key{grid,       material,   model::TangentialKind::SteadyRolling,
+                        shift_x_mm, shift_y_mm, nullptr};
   return coarse_steady_.get(key, case_number_, [&](CoarseSteadyOperators& e) {
     ops::assemble_steady_rolling(e, grid, material, shift_x_mm, shift_y_mm, fft_);
     e.preconditioner = std::make_unique<tangential::TangentialPreconditioner>(e.c_xx, e.c_xy,

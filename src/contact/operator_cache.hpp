@@ -31,7 +31,7 @@ struct TangentialOperators : elastic::operators::TangentialOperatorSet {
   std::unique_ptr<tangential::TangentialPreconditioner> preconditioner;
 
   tangential::TangentialOperator view() const {
-    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), !steady()};
+    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), !steady(), interaction.get()};
   }
 };
 
@@ -51,12 +51,14 @@ struct OperatorKey {
   CombinedMaterial material;
   model::TangentialKind kind = model::TangentialKind::None;
   double shift_x = 0.0, shift_y = 0.0;  ///< [mm]
+  elastic::InteractionPtr interaction;  ///< compared by contents
 
   friend bool operator==(const OperatorKey& a, const OperatorKey& b) noexcept {
     return a.grid.mx == b.grid.mx && a.grid.my == b.grid.my && a.grid.dx == b.grid.dx &&
            a.grid.dy == b.grid.dy && a.material.g == b.material.g &&
            a.material.nu == b.material.nu && a.material.k == b.material.k && a.kind == b.kind &&
-           a.shift_x == b.shift_x && a.shift_y == b.shift_y;
+           a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
+           elastic::same_interaction(a.interaction, b.interaction);
   }
 };
 
@@ -123,11 +125,15 @@ class OperatorCache {
   /// Marks the start of a case: entries used from now on are kept until the next call.
   void begin_case() noexcept { ++case_number_; }
 
-  NormalOperators& normal(const Grid& grid, const CombinedMaterial& material);
+  /// `interaction`: attenuation between parts of the grid (IPLAN=4), none by default. The
+  /// preconditioners ignore it (they approximate the full-interaction operator).
+  NormalOperators& normal(const Grid& grid, const CombinedMaterial& material,
+                          elastic::InteractionPtr interaction = nullptr);
   /// Tangential operators for shifts, transient or steady rolling with the rolling step
   /// (shift_x, shift_y) [mm] (ignored for shifts).
   TangentialOperators& tangential(const Grid& grid, const CombinedMaterial& material,
-                                  model::TangentialKind kind, double shift_x_mm, double shift_y_mm);
+                                  model::TangentialKind kind, double shift_x_mm, double shift_y_mm,
+                                  elastic::InteractionPtr interaction = nullptr);
   /// Steady-rolling operator of a coarse level with its (coarse) rolling step [mm].
   CoarseSteadyOperators& coarse_steady(const Grid& grid, const CombinedMaterial& material,
                                        double shift_x_mm, double shift_y_mm);

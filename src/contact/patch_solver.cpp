@@ -213,8 +213,14 @@ bool steady_coarse_start(PatchSolver::Impl& st, int level, const tangential::Tan
 /// Everything the normal and tangential sub-solves of one case share.
 class CaseSolver {
  public:
-  CaseSolver(const model::PatchProblem& problem, PatchSolver::Impl& st, Solution& sol)
-      : problem_(problem), st_(st), sol_(sol), grid_(sol.grid) {}
+  /// `interaction`: attenuation between IPLAN=4 rectangles, or nullptr.
+  CaseSolver(const model::PatchProblem& problem, PatchSolver::Impl& st, Solution& sol,
+             elastic::InteractionPtr interaction)
+      : problem_(problem),
+        st_(st),
+        sol_(sol),
+        grid_(sol.grid),
+        interaction_(std::move(interaction)) {}
 
   void run();
 
@@ -233,6 +239,7 @@ class CaseSolver {
   PatchSolver::Impl& st_;
   Solution& sol_;
   const Grid& grid_;
+  elastic::InteractionPtr interaction_;
   bool coupled_ = false;
   bool prescribed_ = false;  ///< B=2,3: normal problem skipped
   bool simplified_ = false;  ///< M=2,3,5: Fastsim / FaStrip instead of the exact theory
@@ -249,7 +256,7 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   const double load_value = force_given ? problem_.normal.force_N : problem_.normal.approach_mm;
   if (force_given && !(load_value > 0.0))
     throw ProblemError(fmt::format("normal force FN = {} must be positive", load_value));
-  NormalOperators& ops = st_.operators.normal(grid_, sol_.material);
+  NormalOperators& ops = st_.operators.normal(grid_, sol_.material, interaction_);
 
   // h* = h + u_n(p_t): the normal displacement due to the current tangential tractions (K ≠ 0).
   Field h_star = sol_.h;
@@ -290,7 +297,8 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     if (!start.empty()) initial = &start;
   }
 
-  normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner);
+  normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner,
+                              ops.interaction.get());
   normal::NormalResult r =
       solver.solve(h_star, force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach,
                    load_value, settings, initial, sol_.material.nu, sol_.material.g);
@@ -483,7 +491,7 @@ void CaseSolver::run() {
   if (tangential && !simplified_) {
     const auto& k = sol_.kinematics;
     tops_ = &st_.operators.tangential(grid_, sol_.material, kind, k.dq * std::cos(k.chi),
-                                      k.dq * std::sin(k.chi));
+                                      k.dq * std::sin(k.chi), interaction_);
   }
 
   Field px(n, 0.0), py(n, 0.0);
@@ -604,13 +612,14 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
     s.ux = simplified_ux_;
     s.uy = simplified_uy_;
     if (!prescribed_)
-      st_.operators.normal(grid_, s.material).product->apply(s.pn.data(), s.un.data());
+      st_.operators.normal(grid_, s.material, interaction_)
+          .product->apply(s.pn.data(), s.un.data());
   } else if (tops_ != nullptr) {
     const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
     double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};
     tops_->full->apply(in, out);
   } else if (!prescribed_) {
-    NormalOperators& ops = st_.operators.normal(grid_, s.material);
+    NormalOperators& ops = st_.operators.normal(grid_, s.material, interaction_);
     ops.product->apply(s.pn.data(), s.un.data());
   }
 
@@ -659,6 +668,19 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
 
 }  // namespace
 
+namespace {
+
+elastic::InteractionPtr interaction_of(geometry::PlanformParts& parts) {
+  if (parts.n_parts <= 1) return nullptr;
+  auto inter = std::make_shared<elastic::Interaction>();
+  inter->n_parts = parts.n_parts;
+  inter->part = std::move(parts.part);
+  inter->factor = std::move(parts.factor);
+  return inter;
+}
+
+}  // namespace
+
 Solution PatchSolver::solve(const model::PatchProblem& problem) {
   model::validate(problem);  // every front end's values pass the same check
   Impl& st = *impl_;
@@ -674,7 +696,7 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
   sol.h = std::move(disc.h);
 
   st.operators.begin_case();
-  CaseSolver(problem, st, sol).run();
+  CaseSolver(problem, st, sol, interaction_of(disc.parts)).run();
 
   if (!problem.subsurface.empty())
     sol.subsurface = post::compute_subsurface(problem.subsurface, problem.bodies, sol);

@@ -105,6 +105,16 @@ void multiply_2x2(std::complex<double>* u0, std::complex<double>* u1,
 }  // namespace
 
 void BlockConvolution::apply(const double* const* p, double* const* u) {
+  if (interaction_) {
+    const std::size_t n = static_cast<std::size_t>(mx_) * static_cast<std::size_t>(my_);
+    partwise_.apply(*interaction_, n, n_in_, n_out_, p, u,
+                    [this](const double* const* in, double* const* out) { apply_full(in, out); });
+    return;
+  }
+  apply_full(p, u);
+}
+
+void BlockConvolution::apply_full(const double* const* p, double* const* u) {
   const std::size_t nf = static_cast<std::size_t>(engine_->n_fast());
   const std::size_t mx = static_cast<std::size_t>(mx_);
   const std::size_t nspec = engine_->spectrum_size();

@@ -9,6 +9,7 @@
 
 #include "core/fft_backend.hpp"
 #include "elastic/influence.hpp"
+#include "elastic/interaction.hpp"
 
 namespace rollcontact::elastic {
 
@@ -21,6 +22,10 @@ class BlockConvolution {
   /// p[j] and u[i] point at mx*my values (ix fastest); u is overwritten. No allocation.
   void apply(const double* const* p, double* const* u);
 
+  /// From now on every block is attenuated between parts (one product per part); nullptr: full.
+  void set_interaction(InteractionPtr interaction) { interaction_ = std::move(interaction); }
+  const Interaction* interaction() const noexcept { return interaction_.get(); }
+
   int n_out() const noexcept { return n_out_; }
   int n_in() const noexcept { return n_in_; }
 
@@ -29,6 +34,9 @@ class BlockConvolution {
   std::unique_ptr<core::FftEngine> engine_;
   /// Symbol of block (i, j) in the engine's channel layout, or nullptr for a zero block.
   const std::complex<double>* block(int i, int j) const noexcept;
+  void apply_full(const double* const* p, double* const* u);
+  InteractionPtr interaction_;
+  PartwiseProduct partwise_;
 
   // Distinct kernel spectra (normalisation included) and, per block, the index of its spectrum
   // (−1: zero block).

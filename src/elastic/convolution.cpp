@@ -45,6 +45,17 @@ FftConvolution::FftConvolution(const Kernel& kernel, FftBackendKind backend, Fft
 }
 
 void FftConvolution::apply(const double* p, double* u) {
+  if (interaction_) {
+    const std::size_t n = static_cast<std::size_t>(mx_) * static_cast<std::size_t>(my_);
+    partwise_.apply(
+        *interaction_, n, 1, 1, &p, &u,
+        [this](const double* const* in, double* const* out) { apply_full(in[0], out[0]); });
+    return;
+  }
+  apply_full(p, u);
+}
+
+void FftConvolution::apply_full(const double* p, double* u) {
   convolve(p);
   const std::size_t nf = static_cast<std::size_t>(engine_->n_fast());
   const std::size_t mx = static_cast<std::size_t>(mx_);
@@ -56,6 +67,13 @@ void FftConvolution::apply(const double* p, double* u) {
 }
 
 double FftConvolution::apply_dot(const double* p, double* u) {
+  if (interaction_) {
+    apply(p, u);
+    const std::size_t n = static_cast<std::size_t>(mx_) * static_cast<std::size_t>(my_);
+    double dot = 0.0;
+    for (std::size_t i = 0; i < n; ++i) dot += p[i] * u[i];
+    return dot;
+  }
   convolve(p);
   const std::size_t nf = static_cast<std::size_t>(engine_->n_fast());
   const std::size_t mx = static_cast<std::size_t>(mx_);

@@ -9,6 +9,7 @@
 #include "core/fft_backend.hpp"
 #include "core/linear_operator.hpp"
 #include "elastic/influence.hpp"
+#include "elastic/interaction.hpp"
 
 namespace rollcontact::elastic {
 
@@ -30,11 +31,18 @@ class FftConvolution final : public LinearOperator {
   int mx() const noexcept { return mx_; }
   int my() const noexcept { return my_; }
 
+  /// From now on u_I = Σ_J f(part I, part J) K(I−J) p_J (one product per part); nullptr: full.
+  void set_interaction(InteractionPtr interaction) { interaction_ = std::move(interaction); }
+  const Interaction* interaction() const noexcept { return interaction_.get(); }
+
  private:
   void convolve(const double* p);  // A·p into the first my rows of the engine's real array
+  void apply_full(const double* p, double* u);
 
   int mx_, my_;
   std::unique_ptr<core::FftEngine> engine_;  // holds the kernel spectrum (scaled by 1/(nf ns))
+  InteractionPtr interaction_;
+  PartwiseProduct partwise_;
 };
 
 /// Dense O(N²) product, the oracle.

@@ -17,6 +17,7 @@ Discretisation build(const model::PatchProblem& problem, const CombinedMaterial&
   if (!pot.hertzian()) {
     d.grid = rectangular_grid(pot);
     d.h = undeformed_distance(d.grid, problem.gap);
+    d.parts = planform_parts(d.grid, problem.gap);
     return d;
   }
 

@@ -2,6 +2,7 @@
 // From a patch problem's potential-contact and geometry description to the element grid and the
 // undeformed distance h per element (spec/physics.md §2, §4, §8).
 
+#include <cstdint>
 #include <vector>
 
 #include "geometry/hertz.hpp"
@@ -17,10 +18,22 @@ inline constexpr double excluded_distance = 1e30;
 using model::PotentialContact;
 using model::UndeformedDistance;
 
+/// IPLAN=4 rectangles that feel each other only in part (physics.md §4): the rectangle of each
+/// element (the first containing it; 0 for excluded elements) and the symmetric factors
+/// f(a, b) with f(a, a) = 1, row-major. n_parts = 1 and empty vectors: full interaction.
+struct PlanformParts {
+  int n_parts = 1;
+  std::vector<std::uint8_t> part;
+  std::vector<double> factor;
+};
+/// Upper bound on NPATCH: each part costs one influence product per application.
+inline constexpr int kMaxPlanformPatches = 64;
+
 struct Discretisation {
   Grid grid;
   std::vector<double> h;  ///< undeformed distance without approach [mm], excluded = 1e30
   HertzReport hertz;      ///< present for Hertzian IPOTCN < 0
+  PlanformParts parts;    ///< IPLAN=4 attenuation between rectangles
 };
 
 /// Builds grid and undeformed distance. For Hertzian options the Hertz solution uses the normal
@@ -53,11 +66,14 @@ Grid hertzian_grid(const model::PotentialContact& pot, const HertzReport& hertz)
 /// max_element_size and the corner is finite.
 void validate_grid(const Grid& grid);
 
-/// Undeformed distance of IBASE 1/2/3/9 with IPLAN 1/2/3 on `grid`, evaluated at element
+/// Undeformed distance of IBASE 1/2/3/9 with IPLAN 1/2/3/4 on `grid`, evaluated at element
 /// centres [mm]; excluded elements get excluded_distance. Throws ProblemError for missing or
 /// inconsistent data (coefficient counts, NN < 2, DY1 ≤ 0, RM = 0, B7/B8 = 0, IBASE 9 count
-/// ≠ MX·MY, all elements excluded) and NotSupportedError for IPLAN 4.
+/// ≠ MX·MY, all elements excluded, IPLAN 4 limits or factors outside [0, 1]).
 std::vector<double> undeformed_distance(const Grid& grid,
                                         const model::UndeformedDistance& geometry);
+
+/// The IPLAN=4 parts of `grid` (n_parts = 1 for other planforms or when every factor is 1).
+PlanformParts planform_parts(const Grid& grid, const model::UndeformedDistance& geometry);
 
 }  // namespace rollcontact::geometry

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,30 @@ void require_count(const std::vector<double>& v, std::size_t n, const char* what
   if (v.size() < n) {
     throw ProblemError(std::string(what) + " needs " + std::to_string(n) + " values, got " +
                        std::to_string(v.size()));
+  }
+}
+
+/// IPLAN=4: NPATCH rectangles with ordered limits and factors f_ij in [0, 1] (a factor above 1
+/// or below 0 would make the influence operator indefinite).
+void validate_patches(const UndeformedDistance& g) {
+  if (g.npatch < 1 || g.npatch > kMaxPlanformPatches) {
+    throw ProblemError("IPLAN=4: NPATCH = " + std::to_string(g.npatch) + " must lie in 1.." +
+                       std::to_string(kMaxPlanformPatches));
+  }
+  const auto n = static_cast<std::size_t>(g.npatch);
+  require_count(g.planform, 4 * n, "IPLAN=4 (NPATCH rectangles) XL XH YL YH per patch");
+  for (std::size_t i = 0; i < 4 * n; i += 2) {
+    if (g.planform[i] > g.planform[i + 1]) {
+      throw ProblemError("IPLAN=4: each lower limit must be <= its upper limit (patch " +
+                         std::to_string(i / 4 + 1) + ")");
+    }
+  }
+  require_count(g.patch_factors, n * (n - 1) / 2, "IPLAN=4 factors f12 f13 ... f23 ...");
+  for (double f : g.patch_factors) {
+    if (!(f >= 0.0 && f <= 1.0)) {
+      throw ProblemError("IPLAN=4: interaction factor " + std::to_string(f) +
+                         " must lie in [0, 1]");
+    }
   }
 }
 
@@ -94,12 +119,21 @@ void validate_geometry(const Grid& grid, const UndeformedDistance& g) {
       break;
     }
     case 4:
-      throw NotSupportedError(
-          "IPLAN=4 (NPATCH rectangles with interaction factors) is not "
-          "supported");
+      validate_patches(g);
+      break;
     default:
-      throw ProblemError("IPLAN must be 1, 2 or 3, got " + std::to_string(g.iplan));
+      throw ProblemError("IPLAN must be 1, 2, 3 or 4, got " + std::to_string(g.iplan));
   }
+}
+
+/// IPLAN=4: the first rectangle (XL XH YL YH, borders inclusive) containing (x, y), or −1.
+int rectangle_of(const UndeformedDistance& g, double x, double y) {
+  const std::vector<double>& p = g.planform;
+  for (int k = 0; k < g.npatch; ++k) {
+    const std::size_t o = 4 * static_cast<std::size_t>(k);
+    if (x >= p[o] && x <= p[o + 1] && y >= p[o + 2] && y <= p[o + 3]) return k;
+  }
+  return -1;
 }
 
 /// True when the element centre (x, y) belongs to the planform.
@@ -113,12 +147,40 @@ bool in_planform(const UndeformedDistance& g, double x, double y) {
       const bool in2 = x >= p[4] && x <= p[5] && y >= p[6] && y <= p[7];
       return in1 || in2;
     }
+    case 4:  // union of NPATCH closed rectangles
+      return rectangle_of(g, x, y) >= 0;
     default:
       return true;
   }
 }
 
 }  // namespace
+
+PlanformParts planform_parts(const Grid& grid, const UndeformedDistance& geometry) {
+  PlanformParts parts;
+  if (geometry.iplan != 4 || geometry.npatch < 2) return parts;
+  validate_patches(geometry);
+  bool attenuated = false;
+  for (double f : geometry.patch_factors) attenuated = attenuated || f != 1.0;
+  if (!attenuated) return parts;
+  const int n = geometry.npatch;
+  parts.n_parts = n;
+  parts.factor.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(n), 1.0);
+  std::size_t k = 0;  // f12 f13 ... f1n f23 ...
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b, ++k) {
+      const double f = geometry.patch_factors[k];
+      parts.factor[static_cast<std::size_t>(a * n + b)] = f;
+      parts.factor[static_cast<std::size_t>(b * n + a)] = f;
+    }
+  parts.part.assign(grid.size(), 0);
+  for (int iy = 0; iy < grid.my; ++iy)
+    for (int ix = 0; ix < grid.mx; ++ix) {
+      const int r = rectangle_of(geometry, grid.x_centre(ix), grid.y_centre(iy));
+      parts.part[grid.index(ix, iy)] = static_cast<std::uint8_t>(r < 0 ? 0 : r);
+    }
+  return parts;
+}
 
 std::vector<double> undeformed_distance(const Grid& grid, const UndeformedDistance& geometry) {
   validate_geometry(grid, geometry);

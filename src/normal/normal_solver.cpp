@@ -89,8 +89,9 @@ std::vector<double> initial_pressure(const Grid& grid, const std::vector<double>
 }
 
 NormalSolver::NormalSolver(const Grid& grid, elastic::LinearOperator& a,
-                           const elastic::Kernel& kernel, Preconditioner& m)
-    : grid_(grid), a_(a), kernel_(kernel), m_(m) {}
+                           const elastic::Kernel& kernel, Preconditioner& m,
+                           const elastic::Interaction* interaction)
+    : grid_(grid), a_(a), kernel_(kernel), m_(m), interaction_(interaction) {}
 
 void NormalSolver::apply_sparse_correction(const std::vector<int>& changed,
                                            const std::vector<double>& delta,
@@ -108,12 +109,19 @@ void NormalSolver::apply_sparse_correction(const std::vector<int>& changed,
                 kx * static_cast<std::size_t>(my - 1 - jy);
   }
   for (int iy = 0; iy < my; ++iy) {
-    double* row = u.data() + static_cast<std::size_t>(mx) * static_cast<std::size_t>(iy);
+    const std::size_t row_start = static_cast<std::size_t>(mx) * static_cast<std::size_t>(iy);
+    double* row = u.data() + row_start;
     const std::size_t shift = kx * static_cast<std::size_t>(iy);
     for (std::size_t k = 0; k < changed.size(); ++k) {
       const double* krow = first_[k] + shift;
       const double dp = delta[k];
-      for (int ix = 0; ix < mx; ++ix) row[ix] += krow[ix] * dp;
+      if (interaction_ == nullptr) {
+        for (int ix = 0; ix < mx; ++ix) row[ix] += krow[ix] * dp;
+      } else {
+        const auto j = static_cast<std::size_t>(changed[k]);
+        for (int ix = 0; ix < mx; ++ix)
+          row[ix] += interaction_->f(row_start + static_cast<std::size_t>(ix), j) * krow[ix] * dp;
+      }
     }
   }
 }

@@ -16,6 +16,7 @@
 
 #include "elastic/convolution.hpp"
 #include "elastic/influence.hpp"
+#include "elastic/interaction.hpp"
 #include "normal/preconditioner.hpp"
 #include "rollcontact/grid.hpp"
 
@@ -47,8 +48,10 @@ class NormalSolver {
  public:
   /// `a` applies C_nn/G on the grid; `kernel` is the same operator tabulated (used for sparse
   /// corrections of A·p when few elements change); `m` is the preconditioner.
+  /// `interaction` (optional): the attenuation between parts that `a` applies, needed here for
+  /// the sparse corrections.
   NormalSolver(const Grid& grid, elastic::LinearOperator& a, const elastic::Kernel& kernel,
-               Preconditioner& m);
+               Preconditioner& m, const elastic::Interaction* interaction = nullptr);
 
   /// Solves for the undeformed distance h (grid.size() values [mm]; values ≥ 1e29 mark excluded
   /// elements). `value` is PEN [mm] or FN [N]. `initial` (optional, grid.size() values) is a
@@ -74,6 +77,7 @@ class NormalSolver {
   elastic::LinearOperator& a_;
   const elastic::Kernel& kernel_;
   Preconditioner& m_;
+  const elastic::Interaction* interaction_;
   std::vector<const double*> first_;  // scratch of apply_sparse_correction
 };
 

@@ -81,6 +81,7 @@ class GaussSeidelSweeper {
     const elastic::Kernel &kxx = *sys_.a.xx, &kxy = *sys_.a.xy, &kyx = *sys_.a.yx,
                           &kyy = *sys_.a.yy;
     const double d[4] = {kxx.at(0, 0), kxy.at(0, 0), kyx.at(0, 0), kyy.at(0, 0)};
+    const elastic::Interaction* inter = sys_.a.interaction;
     const int mx = grid_.mx;
     for (int i : elements_) {
       const std::size_t ui = static_cast<std::size_t>(i);
@@ -103,8 +104,9 @@ class GaussSeidelSweeper {
         const int j = elements_[k];
         const int dix = j % mx - ix, diy = j / mx - iy;
         const std::size_t uj = static_cast<std::size_t>(j);
-        sx_[uj] += kxx.at(dix, diy) * dpx + kxy.at(dix, diy) * dpy;
-        sy_[uj] += kyx.at(dix, diy) * dpx + kyy.at(dix, diy) * dpy;
+        const double f = inter == nullptr ? 1.0 : inter->f(uj, ui);
+        sx_[uj] += f * (kxx.at(dix, diy) * dpx + kxy.at(dix, diy) * dpy);
+        sy_[uj] += f * (kyx.at(dix, diy) * dpx + kyy.at(dix, diy) * dpy);
       }
     }
   }

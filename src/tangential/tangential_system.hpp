@@ -14,6 +14,7 @@
 
 #include "elastic/block_convolution.hpp"
 #include "elastic/influence.hpp"
+#include "elastic/interaction.hpp"
 #include "rollcontact/grid.hpp"
 #include "rollcontact/solution.hpp"
 #include "tangential/tangential_preconditioner.hpp"
@@ -32,6 +33,9 @@ struct TangentialOperator {
   /// a cumulative sum along each row from the leading edge.
   TangentialPreconditioner* preconditioner = nullptr;
   bool symmetric = true;  ///< A = Aᵀ (shift and transient rolling); false: steady rolling
+  /// Attenuation between parts of the grid, already inside `product`; solvers that use kernel
+  /// entries directly (Gauss–Seidel) apply f(part I, part J) themselves. nullptr: none.
+  const elastic::Interaction* interaction = nullptr;
 
   /// (u_x, u_y) = A·(p_x, p_y) over the whole grid.
   void apply(const std::vector<double>& px, const std::vector<double>& py, std::vector<double>& ux,

@@ -100,13 +100,44 @@ void finish_region(ContactRegion& r, const PlacedProfiles& prof) {
   r.delta_rad = d;
 }
 
-double box_distance(const ContactRegion& a, const ContactRegion& b) {
+RegionExtent extent_of(const ContactRegion& r) {
+  return {r.y_min, r.y_max, r.z_min, r.z_max};
+}
+
+double box_distance(const RegionExtent& a, const RegionExtent& b) {
   const double dy = std::max({0.0, b.y_min - a.y_max, a.y_min - b.y_max});
   const double dz = std::max({0.0, b.z_min - a.z_max, a.z_min - b.z_max});
   return std::hypot(dy, dz);
 }
 
-/// Step 5: neighbouring regions closer than D_SEP (and within A_SEP in angle) form one patch.
+/// Interaction factor of two parts at box distance d: 1 up to D_COMB, falling linearly to 0 at
+/// D_SEP (docs/decisions.md: the linear ramp reproduces CONTACT's mbench_a22_right case 11).
+double interaction_factor(double d, const model::ContactSearchSettings& s) {
+  if (d <= s.d_comb_mm) return 1.0;
+  if (d >= s.d_sep_mm) return 0.0;
+  return (s.d_sep_mm - d) / (s.d_sep_mm - s.d_comb_mm);
+}
+
+/// Attenuation factors between the parts of a combined patch; none when all equal 1.
+void set_part_factors(ContactRegion& q, const model::ContactSearchSettings& s) {
+  const std::size_t n = q.parts.size();
+  q.part_factors.assign(n * n, 1.0);
+  bool attenuated = false;
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = 0; b < n; ++b) {
+      if (a == b) continue;
+      const double f = interaction_factor(box_distance(q.parts[a], q.parts[b]), s);
+      q.part_factors[a * n + b] = f;
+      attenuated = attenuated || f < 1.0;
+    }
+  if (!attenuated) {
+    q.parts.clear();
+    q.part_factors.clear();
+  }
+}
+
+/// Step 5: neighbouring regions closer than D_SEP (and within A_SEP in angle) form one patch;
+/// beyond D_COMB their cross-influence is attenuated (parts with factors).
 std::vector<ContactRegion> combine(std::vector<ContactRegion> regions,
                                    const model::ContactSearchSettings& s) {
   std::vector<ContactRegion> out;
@@ -114,7 +145,17 @@ std::vector<ContactRegion> combine(std::vector<ContactRegion> regions,
     if (!out.empty()) {
       ContactRegion& q = out.back();
       const double angle = std::abs(q.wd / q.weight - r.wd / r.weight);
-      if (angle <= s.a_sep_rad && box_distance(q, r) <= s.d_sep_mm) {
+      const double d = box_distance(extent_of(q), extent_of(r));
+      if (angle <= s.a_sep_rad && d <= s.d_sep_mm) {
+        if (q.parts.empty()) q.parts.push_back(extent_of(q));
+        if (d <= s.d_comb_mm) {
+          RegionExtent& last = q.parts.back();  // fully combined: one part
+          last.y_max = r.y_max;
+          last.z_min = std::min(last.z_min, r.z_min);
+          last.z_max = std::max(last.z_max, r.z_max);
+        } else {
+          q.parts.push_back(extent_of(r));
+        }
         q.last = r.last;
         q.x_min = std::min(q.x_min, r.x_min);
         q.x_max = std::max(q.x_max, r.x_max);
@@ -131,6 +172,8 @@ std::vector<ContactRegion> combine(std::vector<ContactRegion> regions,
     }
     out.push_back(std::move(r));
   }
+  for (ContactRegion& q : out)
+    if (!q.parts.empty()) set_part_factors(q, s);
   return out;
 }
 

@@ -21,6 +21,11 @@ struct GapFunction {
   double y(std::size_t j) const { return y0_mm + dy_mm * static_cast<double>(j); }
 };
 
+/// Lateral and vertical extent of one of the regions a patch was combined from [mm].
+struct RegionExtent {
+  double y_min = 0.0, y_max = 0.0, z_min = 0.0, z_max = 0.0;
+};
+
 /// One contact region: where the wheel and the rail interpenetrate, or a combination of them.
 struct ContactRegion {
   std::size_t first = 0, last = 0;      ///< gap samples, one guard sample each side included
@@ -32,6 +37,11 @@ struct ContactRegion {
   double min_gap = 0.0;                 ///< deepest interpenetration (negative) [mm]
   double weight = 0.0;                  ///< Σ w of the samples
   double wx = 0.0, wy = 0.0, wd = 0.0;  ///< Σ w·x_lc, Σ w·y, Σ w·α (for combination)
+  /// Regions combined at a distance D_COMB < d ≤ D_SEP, by lateral position: their influence on
+  /// each other is attenuated (factors, row-major parts × parts; physics.md §13.3 step 5).
+  /// Empty when the patch is one region or fully combined ones.
+  std::vector<RegionExtent> parts;
+  std::vector<double> part_factors;
 };
 
 struct SearchResult {

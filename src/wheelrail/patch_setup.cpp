@@ -44,6 +44,33 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
   return h;
 }
 
+/// Regions combined at a distance between D_COMB and D_SEP: IPLAN=4 rectangles, one lateral
+/// band per region split half-way between them, with the regions' interaction factors.
+void set_attenuated_parts(const PlacedProfiles& prof, const ContactRegion& region,
+                          const ContactFrame& f, model::UndeformedDistance& gap) {
+  const std::size_t n = region.parts.size();
+  if (n < 2) return;
+  constexpr double kAll = 1e6;  // [mm] beyond any grid
+  std::vector<double> bounds{-kAll};
+  for (std::size_t a = 0; a + 1 < n; ++a) {
+    const double y_mid = 0.5 * (region.parts[a].y_max + region.parts[a + 1].y_min);
+    const Vec3 on_rail{f.origin.x, y_mid, prof.rail_at_track_y(y_mid).z};
+    bounds.push_back(dot(on_rail - f.origin, f.es));
+  }
+  bounds.push_back(kAll);
+  gap.iplan = 4;
+  gap.npatch = static_cast<int>(n);
+  gap.planform.clear();
+  for (std::size_t a = 0; a < n; ++a) {
+    const double lo = std::min(bounds[a], bounds[a + 1]), hi = std::max(bounds[a], bounds[a + 1]);
+    gap.planform.insert(gap.planform.end(), {-kAll, kAll, lo, hi});
+  }
+  gap.patch_factors.clear();
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      gap.patch_factors.push_back(region.part_factors[a * n + b]);
+}
+
 }  // namespace
 
 ContactFrame contact_frame(const ContactRegion& region) {
@@ -109,6 +136,14 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
     s.iy0 = static_cast<int>(std::floor(std::min(s_lo, s_hi) / s.ds_mm)) - 1;
     mx = static_cast<int>(std::ceil(x_hi / s.dx_mm)) + 1 - s.ix0 + 1;
     my = static_cast<int>(std::ceil(std::max(s_lo, s_hi) / s.ds_mm)) + 1 - s.iy0 + 1;
+    // Grid sizes rounded up to multiples of 8 (extra elements split over both ends): the
+    // influence kernels and FFT plans depend on the size only, so the force iteration and
+    // neighbouring cases reuse them instead of recomputing (measured: most of the solve time).
+    const int pad_x = (8 - mx % 8) % 8, pad_y = (8 - my % 8) % 8;
+    s.ix0 -= pad_x / 2;
+    s.iy0 -= pad_y / 2;
+    mx += pad_x;
+    my += pad_y;
     if (static_cast<long>(mx) * my < p.search.max_elements || doubling > 20) break;
     s.dx_mm *= 2.0;
     s.ds_mm *= 2.0;
@@ -129,6 +164,7 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
   q.gap.ibase = 9;
   q.gap.iplan = 1;
   q.gap.values = undeformed_distance(prof, pose, s.frame, s, mx, my, s.pen_mm);
+  set_attenuated_parts(prof, region, s.frame, q.gap);
   q.normal.kind = model::NormalLoadKind::Approach;
   q.normal.approach_mm = s.pen_mm;
   s.kinematics = patch_kinematics(p, pose, prof, s.frame, s.pen_mm);

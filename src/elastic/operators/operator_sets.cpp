@@ -7,11 +7,13 @@
 namespace rollcontact::elastic::operators {
 
 void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMaterial& material,
-                     FftChoice fft) {
+                     FftChoice fft, InteractionPtr interaction) {
   set.grid = grid;
   set.material = material;
+  set.interaction = std::move(interaction);
   set.kernel = make_kernel(Component::nn, grid, material);
   set.product = std::make_unique<FftConvolution>(set.kernel, fft.backend, fft.planning);
+  set.product->set_interaction(set.interaction);
 }
 
 namespace {
@@ -91,7 +93,8 @@ TangentialLoadingKey tangential_loading_key(model::TangentialKind kind, double s
 
 void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
                          const CombinedMaterial& material, model::TangentialKind kind,
-                         double shift_x_mm, double shift_y_mm, FftChoice fft) {
+                         double shift_x_mm, double shift_y_mm, FftChoice fft,
+                         InteractionPtr interaction) {
   const TangentialLoadingKey key = tangential_loading_key(kind, shift_x_mm, shift_y_mm);
   set.grid = grid;
   set.material = material;
@@ -110,6 +113,10 @@ void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
   if (coupled)
     set.tn = std::make_unique<BlockConvolution>(
         2, 1, std::vector<const Kernel*>{&set.tn_x, &set.tn_y}, fft.backend, fft.planning);
+  set.interaction = std::move(interaction);
+  for (BlockConvolution* product :
+       {set.a.get(), set.prev.get(), set.tn.get(), set.nt.get(), set.full.get()})
+    if (product != nullptr) product->set_interaction(set.interaction);
 }
 
 void assemble_steady_rolling(SteadyRollingOperatorSet& set, const Grid& grid,

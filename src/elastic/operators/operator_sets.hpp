@@ -11,6 +11,7 @@
 #include "elastic/block_convolution.hpp"
 #include "elastic/convolution.hpp"
 #include "elastic/influence.hpp"
+#include "elastic/interaction.hpp"
 #include "rollcontact/fft_options.hpp"
 #include "rollcontact/model/loading.hpp"
 
@@ -25,11 +26,12 @@ struct FftChoice {
 struct NormalOperatorSet {
   Grid grid;
   CombinedMaterial material;
+  InteractionPtr interaction;  ///< attenuation between parts of the grid, or none
   Kernel kernel;
   std::unique_ptr<FftConvolution> product;
 };
 void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMaterial& material,
-                     FftChoice fft);
+                     FftChoice fft, InteractionPtr interaction = nullptr);
 
 /// Tangential operators of one grid, material and kind of loading, with the rolling step
 /// (shift_x, shift_y) [mm] (no shift for shifts, model::TangentialKind::Shift):
@@ -42,6 +44,7 @@ void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMat
 struct TangentialOperatorSet {
   Grid grid;
   CombinedMaterial material;
+  InteractionPtr interaction;  ///< attenuation between parts of the grid (all products), or none
   model::TangentialKind kind = model::TangentialKind::Shift;
   double shift_x = 0.0, shift_y = 0.0;  ///< [mm]
   Kernel xx, xy, yy;
@@ -68,7 +71,8 @@ TangentialLoadingKey tangential_loading_key(model::TangentialKind kind, double s
 /// Assembles the set for tangential_loading_key(kind, shift_x_mm, shift_y_mm).
 void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
                          const CombinedMaterial& material, model::TangentialKind kind,
-                         double shift_x_mm, double shift_y_mm, FftChoice fft);
+                         double shift_x_mm, double shift_y_mm, FftChoice fft,
+                         InteractionPtr interaction = nullptr);
 
 /// The steady-rolling operator A = (C − C′)_tt alone, with the plain C_tt its preconditioner is
 /// built from: the coarse levels of the nested-iteration start.

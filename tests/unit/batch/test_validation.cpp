@@ -40,11 +40,14 @@ TEST(ValidationTolerances, TableHasTheContractQuantities) {
   for (const char* name : {"FN/G", "FX/FSTAT/FN", "ELEN", "FRIC", "NPOT", "INORM", "ITANG"})
     EXPECT_EQ(t.find(name), nullptr) << name;
   // Module-1 patches: validation.md §3's wheel/rail tolerances (0.5 % + 2e-4·FZ for forces,
-  // 1 % PMAX, 1e-3 mm locations, 1e-4 rad angles); quantities without one fall back to module 3.
+  // 1 % PMAX, 5e-3 mm locations, 1e-4 rad angles, MN 0.5 % + 1e-3 mm·FZ); quantities without
+  // one fall back to module 3.
   ASSERT_NE(t.find("patch 2/FN"), nullptr);
   EXPECT_NEAR(allowed_difference(*t.find("patch 2/FN"), 9997.0, 10000.0), 0.005 * 9997 + 2.0, 1e-6);
   EXPECT_NEAR(allowed_difference(*t.find("patch 1/PMAX"), 338.3, 10000.0), 3.383, 1e-6);
-  EXPECT_NEAR(allowed_difference(*t.find("patch 1/YCP(TR)"), 751.8726, 10000.0), 1.05e-3, 1e-9);
+  EXPECT_NEAR(allowed_difference(*t.find("patch 1/YCP(TR)"), 751.8726, 10000.0), 5e-3, 1e-9);
+  EXPECT_NEAR(allowed_difference(*t.find("patch 1/MN"), -333.7, 10000.0), 0.005 * 333.7 + 10.0,
+              1e-6);
   EXPECT_NEAR(allowed_difference(*t.find("patch 1/DELTCP(TR)"), -0.029, 10000.0), 1.05e-4, 1e-10);
   EXPECT_NEAR(allowed_difference(*t.find("Z_WS"), 0.1981, 10000.0), 2e-3, 1e-10);
   EXPECT_EQ(t.find("patch 2/NCON"), t.find("NCON"));

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "elastic/block_convolution.hpp"
@@ -85,6 +87,42 @@ TEST_P(BlockConvolutionTest, AgreesWithDenseProducts) {
         }
       }
     }
+  }
+}
+
+TEST_P(BlockConvolutionTest, AttenuatedBetweenPartsScalesEveryBlock) {
+  // Two parts (rows 0–2 and 3–5) with f = 0.4: each output equals the dense block product of
+  // the inputs weighted by f(part I, part J), written out as two masked dense products.
+  const Grid g{.mx = 8, .my = 6, .xl = 0, .yl = 0, .dx = 0.2, .dy = 0.25};
+  const CombinedMaterial m{.g = 1.0, .nu = 0.28, .k = 0.05};
+  const Kernel xx = make_kernel(Component::xx, g, m), xy = make_kernel(Component::xy, g, m);
+  const Kernel yy = make_kernel(Component::yy, g, m), xn = make_kernel(Component::xn, g, m);
+  const std::vector<const Kernel*> kernels{&xx, &xy, &xn, &xy, &yy, nullptr};
+  auto inter = std::make_shared<Interaction>();
+  inter->n_parts = 2;
+  inter->factor = {1, 0.4, 0.4, 1};
+  for (std::size_t e = 0; e < g.size(); ++e)
+    inter->part.push_back(static_cast<std::uint8_t>(e < 3 * 8 ? 0 : 1));
+  BlockConvolution block(2, 3, kernels, GetParam());
+  block.set_interaction(inter);
+  std::vector<std::vector<double>> p;
+  for (unsigned s = 0; s < 3; ++s) p.push_back(random_field(g.size(), 40 + s));
+  std::vector<std::vector<double>> u(2, std::vector<double>(g.size()));
+  const double* in[3] = {p[0].data(), p[1].data(), p[2].data()};
+  double* out[2] = {u[0].data(), u[1].data()};
+  block.apply(in, out);
+  for (int a = 0; a < 2; ++a) {
+    std::vector<std::vector<double>> q = p;
+    for (auto& v : q)
+      for (std::size_t e = 0; e < g.size(); ++e) v[e] *= inter->f_parts(a, inter->part[e]);
+    const auto expected = dense_block(2, 3, kernels, q);
+    for (int i = 0; i < 2; ++i)
+      for (std::size_t e = 0; e < g.size(); ++e)
+        if (inter->part[e] == a) {
+          ASSERT_NEAR(u[static_cast<std::size_t>(i)][e], expected[static_cast<std::size_t>(i)][e],
+                      1e-12 * 48 * xx.at(0, 0))
+              << i << " " << e;
+        }
   }
 }
 

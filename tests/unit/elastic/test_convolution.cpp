@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "elastic/convolution.hpp"
@@ -90,6 +92,44 @@ TEST_P(FftConvolutionTest, PaddedSizeAvoidsWrapAround) {
   fft.apply(p.data(), u.data());
   EXPECT_NEAR(u[grid.index(9, 3)], kernel.at(9, 3), 1e-13 * kernel.at(0, 0));
   EXPECT_NEAR(u[grid.index(0, 0)], kernel.at(0, 0), 1e-13 * kernel.at(0, 0));
+}
+
+TEST_P(FftConvolutionTest, AttenuatedBetweenPartsAgreesWithDefinition) {
+  // u_I = Σ_J f(part I, part J) K(I−J) p_J, against the dense sum written out.
+  const Grid grid{.mx = 9, .my = 7, .xl = 0, .yl = 0, .dx = 0.2, .dy = 0.3};
+  const Kernel kernel = make_kernel(Component::nn, grid, {.g = 1, .nu = 0.28, .k = 0});
+  auto inter = std::make_shared<Interaction>();
+  inter->n_parts = 3;
+  inter->factor = {1, 0.3, 0, 0.3, 1, 0.7, 0, 0.7, 1};
+  for (int iy = 0; iy < grid.my; ++iy)
+    for (int ix = 0; ix < grid.mx; ++ix)
+      inter->part.push_back(static_cast<std::uint8_t>(iy < 3 ? 0 : ix < 4 ? 1 : 2));
+  FftConvolution fft(kernel, GetParam());
+  fft.set_interaction(inter);
+  const std::vector<double> p = random_tractions(grid.size(), 7, false);
+  std::vector<double> u(grid.size());
+  const double dot = fft.apply_dot(p.data(), u.data());
+  double expected_dot = 0.0;
+  for (int iy = 0; iy < grid.my; ++iy)
+    for (int ix = 0; ix < grid.mx; ++ix) {
+      const std::size_t i = grid.index(ix, iy);
+      double expected = 0.0;
+      for (int jy = 0; jy < grid.my; ++jy)
+        for (int jx = 0; jx < grid.mx; ++jx) {
+          const std::size_t j = grid.index(jx, jy);
+          expected += inter->f(i, j) * kernel.at(ix - jx, iy - jy) * p[j];
+        }
+      ASSERT_NEAR(u[i], expected, 1e-12 * kernel.at(0, 0) * 63) << ix << "," << iy;
+      expected_dot += p[i] * expected;
+    }
+  EXPECT_NEAR(dot, expected_dot, 1e-10 * std::abs(expected_dot));
+  // Without the interaction the plain product returns.
+  fft.set_interaction(nullptr);
+  std::vector<double> full(grid.size()), dense_u(grid.size());
+  fft.apply(p.data(), full.data());
+  DenseConvolution(kernel).apply(p.data(), dense_u.data());
+  for (std::size_t i = 0; i < full.size(); ++i)
+    EXPECT_NEAR(full[i], dense_u[i], 1e-12 * kernel.at(0, 0) * 63);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FftConvolutionTest,

@@ -150,6 +150,35 @@ TEST(UndeformedDistance, TwoRectanglesBordersInclusive) {
   EXPECT_THROW(undeformed_distance(g, u), ProblemError);
 }
 
+TEST(UndeformedDistance, PatchesWithFactors) {
+  // IPLAN=4: three rectangles over x = 0..3, y = 0 and 1; the element (2, 1) lies in none.
+  const Grid g = grid(4, 2, -0.5, -0.5, 1.0, 1.0);
+  UndeformedDistance u;
+  u.ibase = 1;
+  u.coeffs = {0, 0, 0, 0, 0, 0.25};
+  u.iplan = 4;
+  u.npatch = 3;
+  u.planform = {0, 1, 0, 1, 2, 3, 0, 0, 3, 3, 1, 1};
+  u.patch_factors = {0.5, 0.0, 1.0};  // f12 f13 f23
+  const std::vector<double> h = undeformed_distance(g, u);
+  for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(h[i], i == 6 ? excluded_distance : 0.25) << i;
+  const PlanformParts parts = planform_parts(g, u);
+  ASSERT_EQ(parts.n_parts, 3);
+  EXPECT_EQ(parts.part, (std::vector<std::uint8_t>{0, 0, 1, 1, 0, 0, 0, 2}));
+  EXPECT_EQ(parts.factor, (std::vector<double>{1, 0.5, 0, 0.5, 1, 1, 0, 1, 1}));
+  // All factors 1: full interaction, no parts.
+  u.patch_factors = {1, 1, 1};
+  EXPECT_EQ(planform_parts(g, u).n_parts, 1);
+  // Factors outside [0, 1] would make the operator indefinite; too few limits or factors.
+  u.patch_factors = {1.5, 1, 1};
+  EXPECT_THROW(undeformed_distance(g, u), ProblemError);
+  u.patch_factors = {1, 1};
+  EXPECT_THROW(undeformed_distance(g, u), ProblemError);
+  u.patch_factors = {1, 1, 1};
+  u.planform.pop_back();
+  EXPECT_THROW(undeformed_distance(g, u), ProblemError);
+}
+
 TEST(UndeformedDistance, RejectsIncompleteData) {
   const Grid g = grid(2, 2, 0.0, 0.0, 1.0, 1.0);
   UndeformedDistance u;
@@ -174,8 +203,8 @@ TEST(UndeformedDistance, RejectsIncompleteData) {
   u.iplan = 2;
   u.planform = {1, 2};
   EXPECT_THROW(undeformed_distance(g, u), ProblemError);
-  u.iplan = 4;
-  EXPECT_THROW(undeformed_distance(g, u), NotSupportedError);
+  u.iplan = 4;  // NPATCH missing
+  EXPECT_THROW(undeformed_distance(g, u), ProblemError);
   u.iplan = 0;
   EXPECT_THROW(undeformed_distance(g, u), ProblemError);
 }
