@@ -21,6 +21,7 @@
 #include "rollcontact/errors.hpp"
 #include "rollcontact/model/validation.hpp"
 #include "rollcontact/solve.hpp"
+#include "simplified/approximate_normal.hpp"
 #include "simplified/prescribed_pressure.hpp"
 #include "simplified/simplified_solver.hpp"
 #include "tangential/kinematics.hpp"
@@ -227,8 +228,10 @@ class CaseSolver {
  private:
   void solve_normal(const Field& px, const Field& py);
   void set_prescribed_pressure();
-  /// FN [N]: the sum of the pressures, or the prescribed force itself with B=2,3 (whose discrete
-  /// pressures sum to FN only up to the discretisation error).
+  /// KPEC (kpec) or ANALYN for the prescribed approach on the case's grid.
+  void set_approximate_pressure(bool kpec);
+  /// FN [N]: the sum of the pressures (also KPEC, ANALYN), or the prescribed force itself with
+  /// B=2,3 (whose discrete pressures sum to FN only up to the discretisation error).
   double total_normal_force() const;
   tangential::TangentialResult solve_simplified(double cksi, double ceta, double cphi);
   tangential::TangentialResult solve_tangential(double cksi, double ceta, double cphi,
@@ -241,8 +244,9 @@ class CaseSolver {
   const Grid& grid_;
   elastic::InteractionPtr interaction_;
   bool coupled_ = false;
-  bool prescribed_ = false;  ///< B=2,3: normal problem skipped
-  bool simplified_ = false;  ///< M=2,3,5: Fastsim / FaStrip instead of the exact theory
+  bool prescribed_ = false;   ///< B=2,3,5,6: normal problem skipped
+  bool approximate_ = false;  ///< B=5,6: KPEC or ANALYN pressures (FN is their sum)
+  bool simplified_ = false;   ///< M=2,3,5: Fastsim / FaStrip instead of the exact theory
   Field simplified_ux_, simplified_uy_;
   std::unique_ptr<physics::FrictionLaw> friction_;
   PreviousFields prev_;
@@ -316,6 +320,11 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
 }
 
 void CaseSolver::set_prescribed_pressure() {
+  const model::PressureModel model = problem_.normal.pressure;
+  if (model == model::PressureModel::Kpec || model == model::PressureModel::Analyn) {
+    set_approximate_pressure(model == model::PressureModel::Kpec);
+    return;
+  }
   const HertzReport& hz = sol_.hertz;
   const bool elliptic = problem_.normal.pressure == model::PressureModel::EllipticHertzian;
   if (!hz.present)
@@ -328,8 +337,25 @@ void CaseSolver::set_prescribed_pressure() {
   sol_.totals.pen = hz.two_dimensional ? 0.0 : hz.pen;  // 2-D Hertz has no approach
 }
 
+void CaseSolver::set_approximate_pressure(bool kpec) {
+  const char* name = kpec ? "KPEC (B=5)" : "ANALYN (B=6)";
+  if (problem_.normal.kind != model::NormalLoadKind::Approach)
+    throw ProblemError(fmt::format("{} needs a prescribed approach (N=0)", name));
+  if (sol_.hertz.present)
+    throw ProblemError(fmt::format("{} needs a non-Hertzian potential contact (IPOTCN > 0)", name));
+  Field h_total = sol_.h;
+  for (double& v : h_total)
+    if (v < geometry::excluded_distance) v -= problem_.normal.approach_mm;
+  simplified::ApproximateNormal r =
+      kpec ? simplified::kpec_pressure(grid_, h_total, sol_.material)
+           : simplified::analyn_pressure(grid_, h_total, sol_.material);
+  sol_.pn = std::move(r.pn);
+  approximate_ = true;
+  sol_.totals.pen = problem_.normal.approach_mm;
+}
+
 double CaseSolver::total_normal_force() const {
-  if (prescribed_) return sol_.hertz.fn;
+  if (prescribed_ && !approximate_) return sol_.hertz.fn;
   double fn = 0.0;
   for (double v : sol_.pn) fn += v;
   return fn * grid_.element_area();

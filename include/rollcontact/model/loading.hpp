@@ -18,6 +18,8 @@ enum class PressureModel {
   ExactHalfSpace,     ///< solved with Kalker's half-space theory on the grid
   EllipticHertzian,   ///< prescribed elliptic (Hertzian) pressure of the Hertz solution
   ParabolicHertzian,  ///< prescribed parabolic pressure of the Hertz solution
+  Kpec,               ///< KPEC approximation for a prescribed approach (B=5)
+  Analyn,             ///< modified ANALYN approximation for a prescribed approach (B=6)
 };
 
 struct NormalLoading {

@@ -44,6 +44,8 @@ model::NormalLoading normal_of(const CaseRecord& r) {
   n.force_N = r.kinematics.fn;
   n.pressure = r.digits.b == 2   ? model::PressureModel::EllipticHertzian
                : r.digits.b == 3 ? model::PressureModel::ParabolicHertzian
+               : r.digits.b == 5 ? model::PressureModel::Kpec
+               : r.digits.b == 6 ? model::PressureModel::Analyn
                                  : model::PressureModel::ExactHalfSpace;
   return n;
 }
@@ -88,7 +90,7 @@ model::SolverOptions solver_of(const CaseRecord& r) {
 
 void check_supported(const CaseRecord& record) {
   const ControlDigits& d = record.digits;
-  if (d.b != 0 && d.b != 2 && d.b != 3) not_supported(fmt::format("normal method B={}", d.b));
+  if (d.b == 1 || d.b == 4) not_supported(fmt::format("normal method B={}", d.b));
   if (d.m != 0 && d.m != 2 && d.m != 3 && d.m != 5)
     not_supported(fmt::format("material model M={}", d.m));
   if ((d.m == 2 || d.m == 3 || d.m == 5) && d.t == 1)

@@ -1,0 +1,33 @@
+#pragma once
+// Approximate normal pressures of non-Hertzian contacts with a prescribed approach
+// (spec/physics.md §7.3): KPEC, Kik–Piotrowski's virtual penetration with Vollebregt's ellipse
+// correction (B=5), and the modified ANALYN (B=6). Both read the total gap
+// h_tot = h − PEN (≤ 0 where the bodies interpenetrate) and need no iteration: one Hertz solution
+// of equivalent curvatures sets the shape, one influence sum the level.
+
+#include <vector>
+
+#include "rollcontact/grid.hpp"
+#include "rollcontact/solution.hpp"
+
+namespace rollcontact::simplified {
+
+struct ApproximateNormal {
+  std::vector<double> pn;  ///< pressure per element [N/mm²]
+  double pen_total = 0.0;  ///< −min h_tot [mm] (0: no interpenetration, pn all zero)
+  HertzReport hertz;       ///< Hertz solution of the equivalent curvatures at pen_total
+};
+
+/// KPEC: equivalent curvatures at the deepest point, a row-wise virtual-penetration threshold
+/// that reproduces the Hertz ellipse, semi-elliptic pressures per row scaled so that the normal
+/// displacement at the deepest point equals pen_total. `h_total` has grid.size() values [mm]
+/// (values ≥ 1e29: excluded); `material` gives G, ν, K for the influence coefficients.
+ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h_total,
+                                const CombinedMaterial& material);
+
+/// Modified ANALYN: per row the local Hertz problem of the row's curvatures and gap, corrected
+/// with the factors of the global Hertz solution (physics.md §7.3).
+ApproximateNormal analyn_pressure(const Grid& grid, const std::vector<double>& h_total,
+                                  const CombinedMaterial& material);
+
+}  // namespace rollcontact::simplified
