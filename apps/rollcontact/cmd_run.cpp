@@ -41,10 +41,11 @@ void print_case_summary(const CaseOutcome& c) {
     const WheelRailSolution& w = c.wheelrail;
     fmt::print(
         "case {:>4}: wheel/rail, {} patch{}  F(TR) = ({:.5g}, {:.5g}, {:.5g}) N  z_ws {:.5g} mm  "
-        "{}\n",
+        "{}  (geometry {:.2f} ms, patches {:.2f} ms)\n",
         p.case_number, w.patches.size(), w.patches.size() == 1 ? "" : "es", w.force_tr.x,
         w.force_tr.y, w.force_tr.z, w.z_ws_mm,
-        w.converged ? "converged" : "NOT CONVERGED: " + w.message);
+        w.converged ? "converged" : "NOT CONVERGED: " + w.message, 1e3 * w.geometry_seconds,
+        1e3 * w.patch_solve_seconds);
     return;
   }
   const auto& s = c.solution;

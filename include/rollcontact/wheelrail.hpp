@@ -54,6 +54,9 @@ struct WheelRailSolution {
   bool converged = true;
   std::string message;                ///< why not converged
   std::vector<std::string> warnings;  ///< adjustments made (grid coarsened, ...)
+  /// Wall time of this case [s]: profile placement, contact search and patch set-up (geometry)
+  /// and the patch solves, over all vertical-force iterates. Not part of the result files.
+  double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
 };
 
 /// Solves wheel/rail cases one after another, keeping the profile curves while the profiles stay
@@ -76,6 +79,9 @@ class WheelsetSolver {
   struct Impl;
 
  private:
+  /// The case as a right wheel (left inputs already mirrored).
+  WheelRailSolution solve_right_side(const model::WheelRailProblem& problem);
+
   std::unique_ptr<Impl> impl_;
 };
 

@@ -14,9 +14,9 @@ NormalOperators& OperatorCache::normal(const Grid& grid, const CombinedMaterial&
                                        elastic::InteractionPtr interaction) {
   const OperatorKey key{grid, material, model::TangentialKind::None, 0.0, 0.0, interaction};
   return normal_.get(key, case_number_, [&](NormalOperators& e) {
-    ops::assemble_normal(e, grid, material, fft_, interaction);
+    ops::assemble_normal(e, grid, material, fft_, interaction, &kernels_);
     e.preconditioner = std::make_unique<normal::CirculantPreconditioner>(
-        grid, material, fft_.backend, fft_.planning);
+        grid, material, fft_.backend, fft_.planning, &e.kernel);
   });
 }
 
@@ -29,7 +29,8 @@ TangentialOperators& OperatorCache::tangential(const Grid& grid, const CombinedM
   const OperatorKey key{grid,       material, loading.kind, loading.shift_x, loading.shift_y,
                         interaction};
   return tangential_.get(key, case_number_, [&](TangentialOperators& e) {
-    ops::assemble_tangential(e, grid, material, kind, shift_x_mm, shift_y_mm, fft_, interaction);
+    ops::assemble_tangential(e, grid, material, kind, shift_x_mm, shift_y_mm, fft_, interaction,
+                             &kernels_);
     e.preconditioner = std::make_unique<tangential::TangentialPreconditioner>(e.c_xx, e.c_xy,
                                                                               e.c_yy, fft_.backend);
   });
@@ -41,7 +42,7 @@ CoarseSteadyOperators& OperatorCache::coarse_steady(const Grid& grid,
   const OperatorKey key{grid,       material,   model::TangentialKind::SteadyRolling,
                         shift_x_mm, shift_y_mm, nullptr};
   return coarse_steady_.get(key, case_number_, [&](CoarseSteadyOperators& e) {
-    ops::assemble_steady_rolling(e, grid, material, shift_x_mm, shift_y_mm, fft_);
+    ops::assemble_steady_rolling(e, grid, material, shift_x_mm, shift_y_mm, fft_, &kernels_);
     e.preconditioner = std::make_unique<tangential::TangentialPreconditioner>(e.c_xx, e.c_xy,
                                                                               e.c_yy, fft_.backend);
   });

@@ -144,6 +144,7 @@ class OperatorCache {
 
  private:
   elastic::operators::FftChoice fft_;
+  elastic::KernelLibrary kernels_;  ///< kernels of all sets, reused across grid sizes
   unsigned long case_number_ = 0;
   OperatorShelf<NormalOperators> normal_;
   OperatorShelf<TangentialOperators> tangential_;

@@ -23,7 +23,8 @@ double IdentityPreconditioner::apply_dot(const double* r, double* z) {
 }
 
 CirculantPreconditioner::CirculantPreconditioner(const Grid& grid, const CombinedMaterial& material,
-                                                 FftBackendKind backend, FftPlanning planning)
+                                                 FftBackendKind backend, FftPlanning planning,
+                                                 const elastic::Kernel* kernel)
     : mx_(grid.mx),
       my_(grid.my),
       nx_(core::good_fft_size(grid.mx)),
@@ -35,10 +36,14 @@ CirculantPreconditioner::CirculantPreconditioner(const Grid& grid, const Combine
     const int oy = j <= ny_ / 2 ? j : j - ny_;
     for (int i = 0; i < nx_; ++i) {
       const int ox = i <= nx_ / 2 ? i : i - nx_;
+      const bool tabulated =
+          kernel != nullptr && std::abs(ox) < kernel->mx() && std::abs(oy) < kernel->my();
       work[static_cast<std::size_t>(i) + static_cast<std::size_t>(nx_) * j] =
-          elastic::influence_coefficient(elastic::Component::nn, ox * grid.dx, oy * grid.dy,
-                                         grid.dx, grid.dy, material.nu, 0.0) /
-          material.g;
+          tabulated
+              ? kernel->at(ox, oy)
+              : elastic::influence_coefficient(elastic::Component::nn, ox * grid.dx, oy * grid.dy,
+                                               grid.dx, grid.dy, material.nu, 0.0) /
+                    material.g;
     }
   }
   const double diagonal = work[0];

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/fft_backend.hpp"
+#include "elastic/influence.hpp"
 #include "rollcontact/grid.hpp"
 #include "rollcontact/solution.hpp"
 
@@ -40,8 +41,11 @@ class IdentityPreconditioner final : public Preconditioner {
 /// approximate inverse whose cost is small next to the product A·p.
 class CirculantPreconditioner final : public Preconditioner {
  public:
+  /// `kernel` (optional): C_nn/G of the grid, whose values are taken instead of evaluating the
+  /// closed forms again (offsets beyond it still are).
   CirculantPreconditioner(const Grid& grid, const CombinedMaterial& material,
-                          FftBackendKind backend, FftPlanning planning = FftPlanning::Estimate);
+                          FftBackendKind backend, FftPlanning planning = FftPlanning::Estimate,
+                          const elastic::Kernel* kernel = nullptr);
   void apply(const double* r, double* z) override;
   double apply_dot(const double* r, double* z) override;
   int nx() const noexcept { return nx_; }

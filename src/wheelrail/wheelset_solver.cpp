@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <optional>
 
@@ -42,6 +43,9 @@ struct WheelsetSolver::Impl {
 
   /// Everything at one wheelset height.
   WheelRailSolution solve_at(const model::WheelRailProblem& p, double z_ws, bool check_ends);
+
+  /// Wall time of the current case [s] (see WheelRailSolution).
+  double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
 };
 
 namespace {
@@ -116,6 +120,11 @@ void mirror_to_left(WheelRailSolution& s) {
 
 WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& p, double z_ws,
                                                  bool check_ends) {
+  using Clock = std::chrono::steady_clock;
+  const auto since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  auto start = Clock::now();
   const PlacedProfiles& prof = profiles_for(p);
   const WheelsetPose pose = wheelrail::pose_of(p, z_ws);
   const SearchResult search = wheelrail::search_contact(p, prof, pose);
@@ -128,7 +137,11 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   Vec3 total_tr{}, total_ws{};
   for (std::size_t k = 0; k < search.patches.size(); ++k) {
     PatchSetup setup = wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings);
+    geometry_seconds += since(start);
+    start = Clock::now();
     Solution sol = solver_for(k).solve(setup.problem);
+    patch_solve_seconds += since(start);
+    start = Clock::now();
     if (!sol.solver.converged) {
       out.converged = false;
       out.message = fmt::format("patch {}: {}", k + 1, sol.solver.message);
@@ -140,6 +153,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   }
   out.force_tr = to_public(total_tr);
   out.force_ws = to_public(total_ws);
+  geometry_seconds += since(start);
   return out;
 }
 
@@ -178,6 +192,15 @@ model::WheelRailProblem as_right_side(model::WheelRailProblem p) {
 
 WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
   const model::WheelRailProblem p = as_right_side(problem);
+  impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
+  WheelRailSolution result = solve_right_side(p);
+  result.geometry_seconds = impl_->geometry_seconds;
+  result.patch_solve_seconds = impl_->patch_solve_seconds;
+  if (problem.side == model::WheelSide::Left) mirror_to_left(result);
+  return result;
+}
+
+WheelRailSolution WheelsetSolver::solve_right_side(const model::WheelRailProblem& p) {
   WheelRailSolution result;
   if (p.vertical == model::VerticalLoading::Position) {
     result = impl_->solve_at(p, p.motion.z_mm, p.first_of_sequence);
@@ -228,7 +251,6 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
       result.warnings.push_back(vf.message);
     }
   }
-  if (problem.side == model::WheelSide::Left) mirror_to_left(result);
   return result;
 }
 

@@ -2,16 +2,28 @@
 
 #include <vector>
 
+#include "elastic/kernel_library.hpp"
 #include "elastic/operators/rolling_difference.hpp"
 
 namespace rollcontact::elastic::operators {
 
+namespace {
+
+/// From the library when there is one (the same values, cut from a kept larger kernel).
+Kernel tabulate(KernelLibrary* library, Component c, const Grid& grid,
+                const CombinedMaterial& material, double shift_x = 0.0, double shift_y = 0.0) {
+  return library != nullptr ? library->kernel(c, grid, material, shift_x, shift_y)
+                            : make_kernel(c, grid, material, shift_x, shift_y);
+}
+
+}  // namespace
+
 void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMaterial& material,
-                     FftChoice fft, InteractionPtr interaction) {
+                     FftChoice fft, InteractionPtr interaction, KernelLibrary* lib) {
   set.grid = grid;
   set.material = material;
   set.interaction = std::move(interaction);
-  set.kernel = make_kernel(Component::nn, grid, material);
+  set.kernel = tabulate(lib, Component::nn, grid, material);
   set.product = std::make_unique<FftConvolution>(set.kernel, fft.backend, fft.planning);
   set.product->set_interaction(set.interaction);
 }
@@ -19,18 +31,18 @@ void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMat
 namespace {
 
 /// The plain 3×3 C (zero couplings when K = 0) and the normal displacement due to p_t.
-void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft) {
+void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, KernelLibrary* lib) {
   const Grid& grid = s.grid;
   const CombinedMaterial& material = s.material;
-  s.c_xx = make_kernel(Component::xx, grid, material);
-  s.c_xy = make_kernel(Component::xy, grid, material);
-  s.c_yy = make_kernel(Component::yy, grid, material);
-  s.c_nn = make_kernel(Component::nn, grid, material);
+  s.c_xx = tabulate(lib, Component::xx, grid, material);
+  s.c_xy = tabulate(lib, Component::xy, grid, material);
+  s.c_yy = tabulate(lib, Component::yy, grid, material);
+  s.c_nn = tabulate(lib, Component::nn, grid, material);
   if (coupled) {
-    s.c_xn = make_kernel(Component::xn, grid, material);
-    s.c_yn = make_kernel(Component::yn, grid, material);
-    s.nt_x = make_kernel(Component::nx, grid, material);
-    s.nt_y = make_kernel(Component::ny, grid, material);
+    s.c_xn = tabulate(lib, Component::xn, grid, material);
+    s.c_yn = tabulate(lib, Component::yn, grid, material);
+    s.nt_x = tabulate(lib, Component::nx, grid, material);
+    s.nt_y = tabulate(lib, Component::ny, grid, material);
     s.nt = std::make_unique<BlockConvolution>(1, 2, std::vector<const Kernel*>{&s.nt_x, &s.nt_y},
                                               fft.backend, fft.planning);
   }
@@ -44,20 +56,21 @@ void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft) {
 }
 
 /// Steady rolling: A = C − C′ with C′ the coefficients seen from one step downstream.
-void assemble_steady_part(TangentialOperatorSet& s, bool coupled) {
+void assemble_steady_part(TangentialOperatorSet& s, bool coupled, KernelLibrary* lib) {
   const double sx = s.shift_x, sy = s.shift_y;
-  s.xx = difference(s.c_xx, make_kernel(Component::xx, s.grid, s.material, sx, sy));
-  s.xy = difference(s.c_xy, make_kernel(Component::xy, s.grid, s.material, sx, sy));
-  s.yy = difference(s.c_yy, make_kernel(Component::yy, s.grid, s.material, sx, sy));
+  s.xx = difference(s.c_xx, tabulate(lib, Component::xx, s.grid, s.material, sx, sy));
+  s.xy = difference(s.c_xy, tabulate(lib, Component::xy, s.grid, s.material, sx, sy));
+  s.yy = difference(s.c_yy, tabulate(lib, Component::yy, s.grid, s.material, sx, sy));
   if (coupled) {
-    s.tn_x = difference(s.c_xn, make_kernel(Component::xn, s.grid, s.material, sx, sy));
-    s.tn_y = difference(s.c_yn, make_kernel(Component::yn, s.grid, s.material, sx, sy));
+    s.tn_x = difference(s.c_xn, tabulate(lib, Component::xn, s.grid, s.material, sx, sy));
+    s.tn_y = difference(s.c_yn, tabulate(lib, Component::yn, s.grid, s.material, sx, sy));
   }
 }
 
 /// Shift and transient rolling: A = C, and the previous-time displacement of the particles now
 /// at the element centres (C′ when rolling, C for a shift).
-void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice fft) {
+void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice fft,
+                             KernelLibrary* lib) {
   const bool rolling = s.kind == model::TangentialKind::TransientRolling;
   const double sx = s.shift_x, sy = s.shift_y;
   s.xx = s.c_xx;
@@ -67,12 +80,12 @@ void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice f
     s.tn_x = s.c_xn;
     s.tn_y = s.c_yn;
   }
-  s.prev_xx = rolling ? make_kernel(Component::xx, s.grid, s.material, sx, sy) : s.xx;
-  s.prev_xy = rolling ? make_kernel(Component::xy, s.grid, s.material, sx, sy) : s.xy;
-  s.prev_yy = rolling ? make_kernel(Component::yy, s.grid, s.material, sx, sy) : s.yy;
+  s.prev_xx = rolling ? tabulate(lib, Component::xx, s.grid, s.material, sx, sy) : s.xx;
+  s.prev_xy = rolling ? tabulate(lib, Component::xy, s.grid, s.material, sx, sy) : s.xy;
+  s.prev_yy = rolling ? tabulate(lib, Component::yy, s.grid, s.material, sx, sy) : s.yy;
   if (coupled) {
-    s.prev_xn = rolling ? make_kernel(Component::xn, s.grid, s.material, sx, sy) : s.c_xn;
-    s.prev_yn = rolling ? make_kernel(Component::yn, s.grid, s.material, sx, sy) : s.c_yn;
+    s.prev_xn = rolling ? tabulate(lib, Component::xn, s.grid, s.material, sx, sy) : s.c_xn;
+    s.prev_yn = rolling ? tabulate(lib, Component::yn, s.grid, s.material, sx, sy) : s.c_yn;
   }
   s.prev = std::make_unique<BlockConvolution>(
       2, 3,
@@ -94,7 +107,7 @@ TangentialLoadingKey tangential_loading_key(model::TangentialKind kind, double s
 void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
                          const CombinedMaterial& material, model::TangentialKind kind,
                          double shift_x_mm, double shift_y_mm, FftChoice fft,
-                         InteractionPtr interaction) {
+                         InteractionPtr interaction, KernelLibrary* lib) {
   const TangentialLoadingKey key = tangential_loading_key(kind, shift_x_mm, shift_y_mm);
   set.grid = grid;
   set.material = material;
@@ -102,11 +115,11 @@ void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
   set.shift_x = key.shift_x;
   set.shift_y = key.shift_y;
   const bool coupled = is_coupled(material);
-  assemble_plain(set, coupled, fft);
+  assemble_plain(set, coupled, fft, lib);
   if (set.steady())
-    assemble_steady_part(set, coupled);
+    assemble_steady_part(set, coupled, lib);
   else
-    assemble_transient_part(set, coupled, fft);
+    assemble_transient_part(set, coupled, fft, lib);
   set.a = std::make_unique<BlockConvolution>(
       2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.xy, &set.yy}, fft.backend,
       fft.planning);
@@ -121,17 +134,20 @@ void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
 
 void assemble_steady_rolling(SteadyRollingOperatorSet& set, const Grid& grid,
                              const CombinedMaterial& material, double shift_x_mm, double shift_y_mm,
-                             FftChoice fft) {
+                             FftChoice fft, KernelLibrary* lib) {
   set.grid = grid;
   set.material = material;
   set.shift_x = shift_x_mm;
   set.shift_y = shift_y_mm;
-  set.c_xx = make_kernel(Component::xx, grid, material);
-  set.c_xy = make_kernel(Component::xy, grid, material);
-  set.c_yy = make_kernel(Component::yy, grid, material);
-  set.xx = difference(set.c_xx, make_kernel(Component::xx, grid, material, shift_x_mm, shift_y_mm));
-  set.xy = difference(set.c_xy, make_kernel(Component::xy, grid, material, shift_x_mm, shift_y_mm));
-  set.yy = difference(set.c_yy, make_kernel(Component::yy, grid, material, shift_x_mm, shift_y_mm));
+  set.c_xx = tabulate(lib, Component::xx, grid, material);
+  set.c_xy = tabulate(lib, Component::xy, grid, material);
+  set.c_yy = tabulate(lib, Component::yy, grid, material);
+  set.xx =
+      difference(set.c_xx, tabulate(lib, Component::xx, grid, material, shift_x_mm, shift_y_mm));
+  set.xy =
+      difference(set.c_xy, tabulate(lib, Component::xy, grid, material, shift_x_mm, shift_y_mm));
+  set.yy =
+      difference(set.c_yy, tabulate(lib, Component::yy, grid, material, shift_x_mm, shift_y_mm));
   set.a = std::make_unique<BlockConvolution>(
       2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.xy, &set.yy}, fft.backend,
       fft.planning);

@@ -12,6 +12,7 @@
 #include "elastic/convolution.hpp"
 #include "elastic/influence.hpp"
 #include "elastic/interaction.hpp"
+#include "elastic/kernel_library.hpp"
 #include "rollcontact/fft_options.hpp"
 #include "rollcontact/model/loading.hpp"
 
@@ -30,8 +31,10 @@ struct NormalOperatorSet {
   Kernel kernel;
   std::unique_ptr<FftConvolution> product;
 };
+/// `lib` (optional) supplies the kernels (cut from kept larger ones, the same values).
 void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMaterial& material,
-                     FftChoice fft, InteractionPtr interaction = nullptr);
+                     FftChoice fft, InteractionPtr interaction = nullptr,
+                     KernelLibrary* lib = nullptr);
 
 /// Tangential operators of one grid, material and kind of loading, with the rolling step
 /// (shift_x, shift_y) [mm] (no shift for shifts, model::TangentialKind::Shift):
@@ -72,7 +75,7 @@ TangentialLoadingKey tangential_loading_key(model::TangentialKind kind, double s
 void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
                          const CombinedMaterial& material, model::TangentialKind kind,
                          double shift_x_mm, double shift_y_mm, FftChoice fft,
-                         InteractionPtr interaction = nullptr);
+                         InteractionPtr interaction = nullptr, KernelLibrary* lib = nullptr);
 
 /// The steady-rolling operator A = (C − C′)_tt alone, with the plain C_tt its preconditioner is
 /// built from: the coarse levels of the nested-iteration start.
@@ -86,6 +89,6 @@ struct SteadyRollingOperatorSet {
 };
 void assemble_steady_rolling(SteadyRollingOperatorSet& set, const Grid& grid,
                              const CombinedMaterial& material, double shift_x_mm, double shift_y_mm,
-                             FftChoice fft);
+                             FftChoice fft, KernelLibrary* lib = nullptr);
 
 }  // namespace rollcontact::elastic::operators

@@ -1,0 +1,44 @@
+#pragma once
+// Influence kernels kept for reuse across grid sizes. A kernel depends on the component, the
+// element size, the material and the rolling shift, but not on MX, MY: the kernel of a grid is
+// the centre of the kernel of any larger grid with the same elements, value for value (the same
+// corner abscissae, the same operations). Wheel/rail patches change their MX, MY from case to
+// case and within the vertical-force iteration; cutting the kernel out of a kept larger one
+// replaces the closed forms (logarithms in long double, most of the set-up time) by a copy.
+
+#include <cstddef>
+#include <list>
+
+#include "elastic/influence.hpp"
+
+namespace rollcontact::elastic {
+
+class KernelLibrary {
+ public:
+  /// At most `budget_bytes` of kernels are kept (least recently used dropped first); a kernel
+  /// larger than a quarter of it is made directly and not kept (large module-3 grids build their
+  /// operators once, and their kernels would only double the memory).
+  explicit KernelLibrary(std::size_t budget_bytes = std::size_t{64} << 20)
+      : budget_bytes_(budget_bytes) {}
+
+  /// Equal to make_kernel(c, grid, material, shift_x, shift_y).
+  Kernel kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                double shift_x = 0.0, double shift_y = 0.0);
+
+  std::size_t computed() const noexcept { return computed_; }  ///< closed-form tabulations
+
+ private:
+  struct Entry {
+    Component c;
+    double dx, dy, g, nu, k, shift_x, shift_y;
+    Kernel kernel;
+  };
+  std::size_t budget_bytes_, kept_bytes_ = 0;
+  std::list<Entry> entries_;  ///< most recently used first
+  std::size_t computed_ = 0;
+};
+
+/// The centre (2mx−1) × (2my−1) offsets of a kernel of at least mx × my elements.
+Kernel cut_kernel(const Kernel& big, int mx, int my);
+
+}  // namespace rollcontact::elastic

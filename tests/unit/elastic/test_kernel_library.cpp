@@ -1,0 +1,55 @@
+// KernelLibrary: kernels cut from a kept larger one are the kernels make_kernel tabulates, value
+// for value, and the closed forms run only when a grid outgrows what is kept.
+
+#include <gtest/gtest.h>
+
+#include "elastic/kernel_library.hpp"
+
+namespace rollcontact::elastic {
+namespace {
+
+Grid grid(int mx, int my) {
+  return {.mx = mx, .my = my, .xl = 0, .yl = 0, .dx = 0.2, .dy = 0.25};
+}
+
+TEST(KernelLibrary, CutKernelsEqualTabulatedOnesExactly) {
+  const CombinedMaterial m{.g = 82000.0, .nu = 0.28, .k = 0.03};
+  KernelLibrary lib;
+  for (Component c : {Component::nn, Component::xx, Component::xy, Component::xn}) {
+    for (auto [mx, my] :
+         {std::pair{16, 12}, std::pair{9, 20}, std::pair{18, 14}, std::pair{3, 2}}) {
+      for (double shift : {0.0, 0.2}) {
+        const Kernel a = lib.kernel(c, grid(mx, my), m, shift, 0.0);
+        const Kernel b = make_kernel(c, grid(mx, my), m, shift, 0.0);
+        ASSERT_EQ(a.mx(), mx);
+        ASSERT_EQ(a.my(), my);
+        EXPECT_EQ(a.data(), b.data()) << static_cast<int>(c) << " " << mx << "x" << my;
+      }
+    }
+  }
+}
+
+TEST(KernelLibrary, TabulatesOnlyWhenAGridOutgrowsTheKeptKernel) {
+  const CombinedMaterial m{.g = 1.0, .nu = 0.3, .k = 0.0};
+  KernelLibrary lib;
+  lib.kernel(Component::nn, grid(16, 16), m);  // keeps 20 × 20
+  EXPECT_EQ(lib.computed(), 1u);
+  lib.kernel(Component::nn, grid(20, 8), m);  // inside: cut
+  lib.kernel(Component::nn, grid(4, 4), m);
+  EXPECT_EQ(lib.computed(), 1u);
+  lib.kernel(Component::nn, grid(21, 8), m);  // outgrows in x
+  EXPECT_EQ(lib.computed(), 2u);
+  lib.kernel(Component::yy, grid(4, 4), m);  // another component, element size or material
+  lib.kernel(Component::nn, {.mx = 4, .my = 4, .xl = 0, .yl = 0, .dx = 0.1, .dy = 0.25}, m);
+  lib.kernel(Component::nn, grid(4, 4), {.g = 2.0, .nu = 0.3, .k = 0.0});
+  EXPECT_EQ(lib.computed(), 5u);
+  // A budget too small to keep anything: every request tabulates, results unchanged.
+  KernelLibrary none(16);
+  none.kernel(Component::nn, grid(8, 8), m);
+  EXPECT_EQ(none.kernel(Component::nn, grid(8, 8), m).data(),
+            make_kernel(Component::nn, grid(8, 8), m).data());
+  EXPECT_EQ(none.computed(), 2u);
+}
+
+}  // namespace
+}  // namespace rollcontact::elastic
