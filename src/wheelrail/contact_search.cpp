@@ -179,25 +179,41 @@ std::vector<ContactRegion> combine(std::vector<ContactRegion> regions,
 
 }  // namespace
 
-SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfiles& prof,
-                            const WheelsetPose& pose) {
-  SearchResult res;
-  GapFunction& g = res.gap;
+GapSamples sample_rail(const model::WheelRailProblem& p, const PlacedProfiles& prof) {
+  GapSamples s;
+  GapFunction& g = s.base;
   g.dy_mm = 0.3 * p.search.ds_mm;
   g.y0_mm = prof.rail_y_mm() + prof.rail().y_min();
   const auto n =
       static_cast<std::size_t>((prof.rail().y_max() - prof.rail().y_min()) / g.dy_mm) + 1;
   g.gap.assign(n, kNoWheel);
   g.rail_angle.assign(n, 0.0);
-  std::vector<double> z_locus;
-  fill_locus(p, prof, pose, g, z_locus);
+  s.rail_z.assign(n, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t j = 0; j < n; ++j) {
+    const CurvePoint r = prof.rail_at_track_y(g.y(j));
+    if (!r.found) continue;
+    s.rail_z[j] = r.z;
+    g.rail_angle[j] = std::atan(r.dz_dy);
+  }
+  return s;
+}
+
+void sample_wheel(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                  const WheelsetPose& pose_at_zero, GapSamples& s) {
+  fill_locus(p, prof, pose_at_zero, s.base, s.locus_z);
+}
+
+SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                            const GapSamples& samples, double z_ws) {
+  SearchResult res;
+  GapFunction& g = res.gap;
+  g = samples.base;
+  const std::size_t n = g.gap.size();
   res.min_gap_mm = kNoWheel;
   std::size_t j_min = 0;
   for (std::size_t j = 0; j < n; ++j) {
-    const CurvePoint r = prof.rail_at_track_y(g.y(j));
-    if (!r.found || z_locus[j] <= -kNoWheel) continue;
-    g.gap[j] = r.z - z_locus[j];
-    g.rail_angle[j] = std::atan(r.dz_dy);
+    if (std::isnan(samples.rail_z[j]) || samples.locus_z[j] <= -kNoWheel) continue;
+    g.gap[j] = samples.rail_z[j] - (samples.locus_z[j] + z_ws);
     if (g.gap[j] < res.min_gap_mm) {
       res.min_gap_mm = g.gap[j];
       j_min = j;

@@ -53,8 +53,24 @@ struct SearchResult {
   bool minimum_at_profile_end = false;  ///< the deepest local minimum is at a rail profile end
 };
 
-/// Runs the search for the wheelset pose. No exception for a miss: no patches.
+/// What the gap function needs that does not change with the wheelset height z_ws: the rail
+/// surface at every lateral sample and the wheel's contact locus at z_ws = 0 (the height moves
+/// the wheel vertically only, so the locus at z_ws is this one shifted by z_ws). Made once per
+/// case, used by every iterate of the vertical-force iteration.
+struct GapSamples {
+  GapFunction base;             ///< grid, x of the locus and rail inclination (gap unset)
+  std::vector<double> rail_z;   ///< rail height per sample [mm] (NaN: outside the rail)
+  std::vector<double> locus_z;  ///< locus height at z_ws = 0 [mm] (−huge: no wheel)
+};
+/// The rail part (grid, heights, inclinations): the same for every case with the same rail
+/// placement and DS.
+GapSamples sample_rail(const model::WheelRailProblem& problem, const PlacedProfiles& profiles);
+/// Fills in the wheel's locus of a case (its pose at z_ws = 0).
+void sample_wheel(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
+                  const WheelsetPose& pose_at_zero, GapSamples& samples);
+
+/// Runs the search at wheelset height z_ws [mm]. No exception for a miss: no patches.
 SearchResult search_contact(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
-                            const WheelsetPose& pose);
+                            const GapSamples& samples, double z_ws_mm);
 
 }  // namespace rollcontact::wheelrail

@@ -31,7 +31,10 @@ struct WheelsetSolver::Impl {
   std::vector<PatchSolver> patch_solvers;  ///< one per patch position (cached operators)
 
   const PlacedProfiles& profiles_for(const model::WheelRailProblem& p) {
-    if (!profiles || !profiles->same_curves(p)) profiles.emplace(p);
+    if (!profiles || !profiles->same_curves(p)) {
+      profiles.emplace(p);
+      ++profiles_generation;
+    }
     profiles->place(p);
     return *profiles;
   }
@@ -41,8 +44,32 @@ struct WheelsetSolver::Impl {
     return patch_solvers[k];
   }
 
-  /// Everything at one wheelset height.
+  /// Places the profiles and samples the gap for the case (everything independent of z_ws);
+  /// the rail samples are kept while the rail placement and DS stay the same.
+  void prepare(const model::WheelRailProblem& p) {
+    const PlacedProfiles& prof = profiles_for(p);
+    const RailKey key{profiles_generation, p.search.ds_mm, prof.rail_y_mm(), prof.rail_z_mm(),
+                      prof.rail_roll_rad()};
+    if (!(key == rail_key) || samples.rail_z.empty()) {
+      samples = wheelrail::sample_rail(p, prof);
+      rail_key = key;
+    }
+    wheelrail::sample_wheel(p, prof, wheelrail::pose_of(p, 0.0), samples);
+  }
+
+  /// Everything at one wheelset height (after prepare()).
   WheelRailSolution solve_at(const model::WheelRailProblem& p, double z_ws, bool check_ends);
+
+  wheelrail::GapSamples samples;  ///< of the current case
+
+  /// What the rail samples depend on.
+  struct RailKey {
+    unsigned long generation = 0;  ///< of the profile curves
+    double ds = 0.0, rail_y = 0.0, rail_z = 0.0, rail_roll = 0.0;
+    bool operator==(const RailKey&) const = default;
+  };
+  RailKey rail_key;
+  unsigned long profiles_generation = 0;  ///< counts the profile curves made
 
   /// Wall time of the current case [s] (see WheelRailSolution).
   double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
@@ -125,9 +152,9 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
   auto start = Clock::now();
-  const PlacedProfiles& prof = profiles_for(p);
+  const PlacedProfiles& prof = *profiles;
   const WheelsetPose pose = wheelrail::pose_of(p, z_ws);
-  const SearchResult search = wheelrail::search_contact(p, prof, pose);
+  const SearchResult search = wheelrail::search_contact(p, prof, samples, z_ws);
   if (check_ends && !search.patches.empty() && search.minimum_at_profile_end)
     throw GeometryError(
         "the deepest interpenetration lies at an end of the rail profile: the wheel is misplaced "
@@ -193,6 +220,10 @@ model::WheelRailProblem as_right_side(model::WheelRailProblem p) {
 WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
   const model::WheelRailProblem p = as_right_side(problem);
   impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  impl_->prepare(p);
+  impl_->geometry_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   WheelRailSolution result = solve_right_side(p);
   result.geometry_seconds = impl_->geometry_seconds;
   result.patch_solve_seconds = impl_->patch_solve_seconds;
@@ -206,8 +237,7 @@ WheelRailSolution WheelsetSolver::solve_right_side(const model::WheelRailProblem
     result = impl_->solve_at(p, p.motion.z_mm, p.first_of_sequence);
   } else {
     // Iterate 0: geometry only, at z_ws = 0: contact starts at the smallest gap.
-    const PlacedProfiles& prof = impl_->profiles_for(p);
-    const SearchResult s0 = wheelrail::search_contact(p, prof, wheelrail::pose_of(p, 0.0));
+    const SearchResult s0 = wheelrail::search_contact(p, *impl_->profiles, impl_->samples, 0.0);
     if (!(s0.min_gap_mm < 1e20)) {
       result.converged = false;
       result.message = "the wheel and rail profiles do not overlap laterally: no contact possible";
