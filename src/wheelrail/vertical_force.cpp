@@ -101,4 +101,75 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   return res;
 }
 
+VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, double start_mm,
+                                               double first_guess_mm,
+                                               const std::function<HeightSample(double)>& full_at,
+                                               const NormalOnlySolve& normal_at) {
+  constexpr int kMaxRounds = 6;
+  VerticalForceResult res;
+  res.trace.push_back({0, start_mm, 0.0, 0.0});
+  const double f_tol = std::max(st.tolerance * st.target_N, 1e-9);
+  int iteration = 0;
+  auto append = [&](const VerticalForceResult& part) {
+    for (std::size_t k = 1; k < part.trace.size(); ++k) {
+      VerticalForceStep step = part.trace[k];
+      step.iteration = ++iteration;
+      res.trace.push_back(step);
+    }
+  };
+  double z = first_guess_mm, guess = first_guess_mm;
+  std::vector<double> fs_ratio;
+  HeightSample s;
+  auto full = [&](double zz) {
+    s = full_at(zz);
+    const PowerLaw model(s);
+    double model_f = 0.0, slope = 0.0;
+    if (model.usable()) model.eval(zz, model_f, slope);
+    res.trace.push_back({++iteration, zz, s.fz_N, slope});
+    res.z_mm = zz;
+    fs_ratio.clear();
+    for (const PatchForceSample& p : s.patches)
+      fs_ratio.push_back(p.fn_N > 0.0 ? p.fs_N / p.fn_N : 0.0);
+    // The next estimate starts from this full solve's power-law model.
+    guess = model.usable() ? model.solve(st.target_N, zz) : zz;
+  };
+  full(z);  // the tangential share of F_z is known only from a full solve
+  if (!std::isfinite(s.fz_N)) {
+    res.message = fmt::format("the vertical force is not finite at z_ws = {:g} mm", z);
+    return res;
+  }
+  if (std::abs(s.fz_N - st.target_N) < f_tol) {
+    res.converged = true;
+    return res;
+  }
+  for (int round = 0; round < kMaxRounds; ++round) {
+    const VerticalForceResult estimate = solve_vertical_force(
+        st, start_mm, guess, [&](double zz) { return normal_at(zz, fs_ratio); });
+    append(estimate);
+    if (!estimate.converged || iteration >= st.max_iterations) break;
+    const bool same_height = std::abs(estimate.z_mm - z) < st.tolerance;
+    z = estimate.z_mm;
+    full(z);
+    if (!std::isfinite(s.fz_N)) break;
+    if (std::abs(s.fz_N - st.target_N) < f_tol) {
+      res.converged = true;
+      return res;
+    }
+    if (same_height) {
+      // The tangential share no longer moves the estimate: accept as the plain iteration does.
+      res.converged = true;
+      res.message =
+          fmt::format("stopped on |dz| < EPS with FZ - target = {:.4g} N", s.fz_N - st.target_N);
+      return res;
+    }
+  }
+  // Fall back on full solves from the last height.
+  const VerticalForceResult plain = solve_vertical_force(st, start_mm, z, full_at);
+  append(plain);
+  res.z_mm = plain.z_mm;
+  res.converged = plain.converged;
+  res.message = plain.message;
+  return res;
+}
+
 }  // namespace rollcontact::wheelrail

@@ -46,4 +46,19 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& settings, 
                                          double first_guess_mm,
                                          const std::function<HeightSample(double)>& solve_at);
 
+/// Estimates F_z from normal solves only: `fs_ratio[i]` = F_s/F_n of patch i at the last full
+/// solve (the tangential share of F_z = F_n cos δ + F_s sin δ).
+using NormalOnlySolve = std::function<HeightSample(double z, const std::vector<double>& fs_ratio)>;
+
+/// The same iteration with cheap iterates: a full solve (`full_at`) at the first guess, then z_ws
+/// iterated on normal solves (`normal_at`) whose F_z takes the tangential share of the last
+/// full solve, and a full solve at each converged estimate, which decides. After 6 rounds the
+/// plain iteration on full solves takes over. The last full solve's results stand, as above.
+/// (Tried: the previous case's shares instead of the first full solve; their error of a few
+/// newtons in F_z costs a second round more often than it saves one.)
+VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& settings,
+                                               double start_mm, double first_guess_mm,
+                                               const std::function<HeightSample(double)>& full_at,
+                                               const NormalOnlySolve& normal_at);
+
 }  // namespace rollcontact::wheelrail

@@ -57,8 +57,10 @@ struct WheelsetSolver::Impl {
     wheelrail::sample_wheel(p, prof, wheelrail::pose_of(p, 0.0), samples);
   }
 
-  /// Everything at one wheelset height (after prepare()).
-  WheelRailSolution solve_at(const model::WheelRailProblem& p, double z_ws, bool check_ends);
+  /// Everything at one wheelset height (after prepare()); `normal_only`: the patches' normal
+  /// problems alone (an estimate inside the vertical-force iteration).
+  WheelRailSolution solve_at(const model::WheelRailProblem& p, double z_ws, bool check_ends,
+                             bool normal_only = false);
 
   wheelrail::GapSamples samples;  ///< of the current case
 
@@ -146,7 +148,7 @@ void mirror_to_left(WheelRailSolution& s) {
 }  // namespace
 
 WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& p, double z_ws,
-                                                 bool check_ends) {
+                                                 bool check_ends, bool normal_only) {
   using Clock = std::chrono::steady_clock;
   const auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
@@ -164,6 +166,12 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   Vec3 total_tr{}, total_ws{};
   for (std::size_t k = 0; k < search.patches.size(); ++k) {
     PatchSetup setup = wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings);
+    // Steady rolling: the previous solve of this patch position (the last iterate, the last
+    // case) is the start of the iterations; a normal-only estimate does not replace it.
+    model::SequenceLink& link = setup.problem.sequence;
+    link.continue_previous = setup.problem.tangential.kind == model::TangentialKind::SteadyRolling;
+    link.becomes_previous = !normal_only;
+    if (normal_only) setup.problem.tangential.kind = model::TangentialKind::None;
     geometry_seconds += since(start);
     start = Clock::now();
     Solution sol = solver_for(k).solve(setup.problem);
@@ -261,7 +269,7 @@ WheelRailSolution WheelsetSolver::solve_right_side(const model::WheelRailProblem
     st.tolerance = p.patch.solver.tolerance;
     st.max_iterations = p.patch.solver.max_newton_iterations;
     bool first = p.first_of_sequence;
-    auto at = [&](double z) {
+    auto full_at = [&](double z) {
       result = impl_->solve_at(p, z, first);
       first = false;
       wheelrail::HeightSample h;
@@ -272,7 +280,24 @@ WheelRailSolution WheelsetSolver::solve_right_side(const model::WheelRailProblem
                              w.solution.totals.fy});
       return h;
     };
-    const wheelrail::VerticalForceResult vf = wheelrail::solve_vertical_force(st, z0, z1, at);
+    // F_z = Σ F_n cos δ + F_s sin δ with F_s = fs_ratio·F_n from the last full solve.
+    auto normal_at = [&](double z, const std::vector<double>& fs_ratio) {
+      const WheelRailSolution r = impl_->solve_at(p, z, false, true);
+      wheelrail::HeightSample h;
+      h.z_mm = z;
+      for (std::size_t k = 0; k < r.patches.size(); ++k) {
+        const WheelRailPatch& w = r.patches[k];
+        const double fn = w.solution.totals.fn, delta = w.contact_angle_rad;
+        const double fs = (k < fs_ratio.size() ? fs_ratio[k] : 0.0) * fn;
+        h.fz_N += fn * std::cos(delta) + fs * std::sin(delta);
+        h.patches.push_back({w.solution.totals.pen, delta, fn, fs});
+      }
+      return h;
+    };
+    const wheelrail::VerticalForceResult vf =
+        p.patch.tangential.kind == model::TangentialKind::None
+            ? wheelrail::solve_vertical_force(st, z0, z1, full_at)
+            : wheelrail::solve_vertical_force_split(st, z0, z1, full_at, normal_at);
     result.trace = vf.trace;
     if (!vf.converged) {
       result.converged = false;

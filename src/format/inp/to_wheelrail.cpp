@@ -72,7 +72,7 @@ void check_supported(const WheelRailRecord& r) {
   if (d.f != 0) not_supported(fmt::format("prescribed forces or massless rail F={}", d.f));
   // The patch-level methods exist (module 3); in module 1 they do not yet reproduce CONTACT's
   // mbench_a22_kpec cases 1-3 and 6 (docs/decisions.md), so they are not offered there yet.
-  if (d.b == 5 || d.b == 6) not_supported(fmt::format("KPEC/ANALYN B={} in module 1", d.b));
+  if (d.b == 5 || d.b == 6) not_supported(fmt::format("KPEC/ANALYN B={} (not yet validated)", d.b));
   if (r.variable_friction.v != 0)
     not_supported(fmt::format("variable friction V={}", r.variable_friction.v));
   if (r.rail.sliced || r.wheel.sliced) not_supported("variable profiles (slices files)");

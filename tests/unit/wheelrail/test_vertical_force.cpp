@@ -1,0 +1,67 @@
+// The vertical-force iteration on a model with a known answer: one patch with
+// F_n = C·pen^1.5·(1 + 40 pen) (the power-law model of the iteration is not exact), pen =
+// (z − z0)·cos δ, and a tangential share F_s/F_n that changes with z, so
+// that normal-only estimates are off until a full solve supplies the share.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "wheelrail/vertical_force.hpp"
+
+namespace rollcontact::wheelrail {
+namespace {
+
+constexpr double kC = 2.0e7, kZ0 = 0.1, kDelta = -0.8, kTarget = 1.0e4;
+
+/// F_s/F_n at height z (a flange contact: about −0.25, drifting with z).
+double share(double z) {
+  return -0.25 - 0.2 * (z - kZ0);
+}
+
+HeightSample sample(double z, double fs_ratio) {
+  HeightSample h;
+  h.z_mm = z;
+  const double pen = std::max(0.0, (z - kZ0) * std::cos(kDelta));
+  const double fn = kC * std::pow(pen, 1.5) * (1.0 + 40.0 * pen);  // not quite a power law
+  h.fz_N = fn * std::cos(kDelta) + fs_ratio * fn * std::sin(kDelta);
+  h.patches.push_back({pen, kDelta, fn, fs_ratio * fn});
+  return h;
+}
+
+TEST(VerticalForce, SplitIterationMeetsTheTargetWithFewFullSolves) {
+  int full_solves = 0, normal_solves = 0;
+  auto full_at = [&](double z) {
+    ++full_solves;
+    return sample(z, share(z));
+  };
+  auto normal_at = [&](double z, const std::vector<double>& fs) {
+    ++normal_solves;
+    return sample(z, fs.empty() ? 0.0 : fs[0]);
+  };
+  VerticalForceSettings st;
+  st.target_N = kTarget;
+  st.tolerance = 1e-5;
+  const VerticalForceResult r =
+      solve_vertical_force_split(st, kZ0, kZ0 + 0.005, full_at, normal_at);
+  ASSERT_TRUE(r.converged) << r.message;
+  // The answer of the full model, not of an estimate: F_z(z) = target to EPS·FZ.
+  EXPECT_NEAR(sample(r.z_mm, share(r.z_mm)).fz_N, kTarget, 1e-5 * kTarget);
+  EXPECT_LE(full_solves, 4);
+  EXPECT_GT(normal_solves, 0);
+  // The plain iteration on full solves reaches the same height.
+  int plain_solves = 0;
+  const VerticalForceResult plain = solve_vertical_force(st, kZ0, kZ0 + 0.005, [&](double z) {
+    ++plain_solves;
+    return sample(z, share(z));
+  });
+  ASSERT_TRUE(plain.converged);
+  EXPECT_NEAR(plain.z_mm, r.z_mm, st.tolerance);  // both within EPS [mm] of each other
+  EXPECT_LT(full_solves, plain_solves);
+  // The trace numbers every iterate once, after the geometry-only iterate 0.
+  for (std::size_t k = 0; k < r.trace.size(); ++k)
+    EXPECT_EQ(r.trace[k].iteration, static_cast<int>(k));
+}
+
+}  // namespace
+}  // namespace rollcontact::wheelrail
