@@ -32,7 +32,6 @@ constexpr FieldKind kReal = FieldKind::real;
 constexpr FieldKind kAngle = FieldKind::angle;
 
 constexpr double kMinElementSize = model::kMinElementSize_mm;  // DX, DS [mm]
-constexpr double kMinChord = 5.0, kMaxChord = 500.0;           // profile length [mm]
 constexpr int kMaxFrictionSets = 10;                           // NVF
 constexpr int kDefaultNpotMax = 20000;
 
@@ -574,7 +573,7 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
   }
   auto check_chord = [&](const Profile& prof) {
     const double chord = profile_chord_length(prof);
-    if (!(chord >= kMinChord && chord <= kMaxChord)) {
+    if (!(chord >= kMinProfileLength_mm && chord <= kMaxProfileLength_mm)) {
       in.fail(line,
               fmt::format("{} profile '{}' has a chord length of {:.6g} mm, outside 5..500 mm "
                           "(check SCALEYZ = {})",

@@ -40,5 +40,7 @@ Profile finish_profile(RawProfile raw, const ProfileOptions& options,
 
 /// Length of the polyline through the points [mm] (CONTACT requires 5..500 mm).
 double profile_chord_length(const Profile& profile);
+/// The admissible profile lengths [mm] (release 25.1): outside, SCALEYZ or the units are wrong.
+inline constexpr double kMinProfileLength_mm = 5.0, kMaxProfileLength_mm = 500.0;
 
 }  // namespace rollcontact::format
