@@ -26,9 +26,10 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
     double t_rail = 0.0;
     if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) continue;
     double t_wheel = t_rail;
+    CurveHint hint;  // the wheel profile segment, carried along the row
     for (int i = 0; i < mx; ++i) {
       const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i)) * f.ex;
-      if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel)) {
+      if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel, &hint)) {
         t_wheel = t_rail;
         continue;
       }

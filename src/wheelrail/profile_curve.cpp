@@ -174,11 +174,15 @@ void ProfileCurve::eval_segment(std::size_t k, double t, double& y, double& z, d
 }
 
 CurvePoint ProfileCurve::solve_in_segment(std::size_t k, double y) const {
-  // y(t) = y on [0, h]: Newton from the chord's estimate, kept inside a shrinking bracket.
+  return solve_in_segment(k, y, -1.0);
+}
+
+CurvePoint ProfileCurve::solve_in_segment(std::size_t k, double y, double t0) const {
+  // y(t) = y on [0, h]: Newton from t0 or the chord's estimate, inside a shrinking bracket.
   const double h = s_[k + 1] - s_[k];
   double lo = 0.0, hi = h;
   const bool up = y_[k + 1] > y_[k];
-  double t = std::clamp((y - y_[k]) / (y_[k + 1] - y_[k]) * h, 0.0, h);
+  double t = t0 >= 0.0 && t0 <= h ? t0 : std::clamp((y - y_[k]) / (y_[k + 1] - y_[k]) * h, 0.0, h);
   double yy = 0.0, zz = 0.0, dy = 0.0, dz = 0.0;
   for (int it = 0; it < 40; ++it) {
     eval_segment(k, t, yy, zz, dy, dz);
@@ -227,6 +231,25 @@ CurvePoint ProfileCurve::at_y(double y) const {
     if (!best.found || (upper_ ? p.z < best.z : p.z > best.z)) best = p;
   }
   return best;
+}
+
+CurvePoint ProfileCurve::at_y(double y, CurveHint& hint) const {
+  const std::size_t k = hint.segment;
+  if (monotone_ && y_.size() >= 2 && k < y_.size() - 1 && !segment_break_[k] &&
+      y >= std::min(y_[k], y_[k + 1]) && y <= std::max(y_[k], y_[k + 1])) {
+    const CurvePoint p = solve_in_segment(k, y, hint.t);
+    hint.t = p.s - s_[k];
+    return p;
+  }
+  const CurvePoint p = at_y(y);
+  if (p.found && monotone_) {
+    hint.segment = static_cast<std::size_t>(
+        std::clamp<std::ptrdiff_t>(std::upper_bound(s_.begin(), s_.end(), p.s) - s_.begin(), 1,
+                                   static_cast<std::ptrdiff_t>(s_.size()) - 1) -
+        1);
+    hint.t = p.s - s_[hint.segment];
+  }
+  return p;
 }
 
 CurvePoint ProfileCurve::at_s(double s) const {

@@ -12,15 +12,29 @@ WheelsetPose pose_of(const model::WheelRailProblem& p, double z_ws_mm) {
 }
 
 bool wheel_surface_along(const PlacedProfiles& profiles, const WheelsetPose& pose, Vec3 from,
-                         Vec3 dir, double t0, double& t) {
+                         Vec3 dir, double t0, double& t, CurveHint* hint) {
   // f(t) = ρ(t) − r(y_p(t)): distance from the axle minus the wheel radius at that section.
   const Vec3 q0 = pose.rotation.transposed_times(from - pose.centre);
   const Vec3 dq = pose.rotation.transposed_times(dir);
   const double y_off = profiles.wheel_y_offset_mm(), r0 = profiles.wheel_r0_mm();
+  CurveHint local;
+  CurveHint& h = hint != nullptr ? *hint : local;
+  // Fast way: one Newton iteration in (profile parameter, t) from the previous element's point.
+  // Profile y = q.y − y_off, profile z = ρ − r0 along the line q(t) = q0 + t·dq.
+  t = t0;
+  const auto line = [&](double tt, double& a, double& da, double& b, double& db) {
+    const Vec3 q = q0 + tt * dq;
+    const double rho = std::hypot(q.x, q.z);
+    a = q.y - y_off;
+    da = dq.y;
+    b = rho - r0;
+    db = (q.x * dq.x + q.z * dq.z) / rho;
+  };
+  if (profiles.wheel().meet_line(line, t, h)) return true;
   t = t0;
   for (int it = 0; it < 30; ++it) {
     const Vec3 q = q0 + t * dq;
-    const CurvePoint w = profiles.wheel().at_y(q.y - y_off);
+    const CurvePoint w = profiles.wheel().at_y(q.y - y_off, h);
     if (!w.found) return false;
     const double rho = std::hypot(q.x, q.z);
     const double f = rho - (r0 + w.z);

@@ -18,9 +18,10 @@ WheelsetPose pose_of(const model::WheelRailProblem& problem, double z_ws_mm);
 
 /// Distance t along the unit direction `dir` from `from` (track coordinates) at which the line
 /// meets the wheel surface, starting the search at `t0`. nullopt-like: returns false when the
-/// line leaves the wheel profile's lateral range or does not converge.
+/// line leaves the wheel profile's lateral range or does not converge. `hint` (optional) carries
+/// the profile segment from one call to the next along a grid row.
 bool wheel_surface_along(const PlacedProfiles& profiles, const WheelsetPose& pose, Vec3 from,
-                         Vec3 dir, double t0, double& t);
+                         Vec3 dir, double t0, double& t, CurveHint* hint = nullptr);
 
 /// Same for the (prismatic) rail surface, in the track's y-z plane.
 bool rail_surface_along(const PlacedProfiles& profiles, Vec3 from, Vec3 dir, double t0, double& t);
