@@ -273,12 +273,16 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
       if (h_star[i] < geometry::excluded_distance) h_star[i] += un_t[i];
   }
 
-  // Starting pressure: the current one in an outer loop, else the Hertz solution for Hertzian
-  // geometries (physics.md §7.1), else the geometric estimate inside the solver.
+  // Starting pressure: the current one in an outer loop, else the previous case's when asked
+  // for, else the Hertz solution for Hertzian geometries (physics.md §7.1), else the coarse-grid
+  // or geometric estimate.
   Field start;
   const Field* initial = nullptr;
   if (!sol_.pn.empty()) {
     initial = &sol_.pn;
+  } else if (problem_.sequence.normal_from_previous && prev_.present &&
+             std::any_of(prev_.pn.begin(), prev_.pn.end(), [](double v) { return v > 0.0; })) {
+    initial = &prev_.pn;
   } else if (sol_.hertz.present) {
     start.assign(n, 0.0);
     for (int iy = 0; iy < grid_.my; ++iy)

@@ -170,6 +170,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
     // case) is the start of the iterations; a normal-only estimate does not replace it.
     model::SequenceLink& link = setup.problem.sequence;
     link.continue_previous = setup.problem.tangential.kind == model::TangentialKind::SteadyRolling;
+    link.normal_from_previous = link.continue_previous;
     link.becomes_previous = !normal_only;
     if (normal_only) setup.problem.tangential.kind = model::TangentialKind::None;
     geometry_seconds += since(start);

@@ -25,6 +25,10 @@ struct SequenceLink {
   /// With prescribed forces: start the creepage iteration from the previous case's creepages
   /// (true) or afresh (false).
   bool force_iteration_from_previous = false;
+  /// With continue_previous: start the normal iteration from the previous pressure (mapped onto
+  /// this grid) instead of the coarse-grid estimate — the start, not the answer. The wheel/rail
+  /// solver sets it for the iterates and cases of one patch position.
+  bool normal_from_previous = false;
 };
 
 struct PatchProblem {
