@@ -19,6 +19,7 @@
 #include "format/profiles/profile_points.hpp"
 #include "format/profiles/profile_reader.hpp"
 #include "format/profiles/profile_slices.hpp"
+#include "format/text/file_names.hpp"
 #include "format/text/inp_checks.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/model/validation.hpp"
@@ -534,9 +535,7 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
 
   // The file itself, relative to the .inp folder.
   const int line = g.line(0);
-  const std::filesystem::path name(ps.file);
-  const std::filesystem::path path =
-      ((name.is_absolute() || base_dir_.empty()) ? name : base_dir_ / name).lexically_normal();
+  const std::filesystem::path path = resolve_input_name(base_dir_, ps.file);
   ps.path = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {

@@ -13,6 +13,7 @@
 #include "format/inp/inp_blocks.hpp"
 #include "format/inp/inp_control.hpp"
 #include "format/inp/reader_checks.hpp"
+#include "format/text/file_names.hpp"
 #include "format/text/inp_checks.hpp"
 #include "rollcontact/model/validation.hpp"
 
@@ -483,10 +484,8 @@ void read_extra_slip(CaseContext& c) {
 
 void Module3Reader::read_coefficient_file(InpStream& in, CaseRecord& p) const {
   const GroupValues g = in.read_group({{"CFNAME", FieldKind::string}}, "the C=9 line ('CFNAME')");
-  const std::filesystem::path name(g.text(0));
-  const std::filesystem::path resolved =
-      (name.is_absolute() || base_dir_.empty()) ? name : base_dir_ / name;
-  p.materials.influence_file = resolved.lexically_normal().string();
+  const std::filesystem::path resolved = resolve_input_name(base_dir_, g.text(0));
+  p.materials.influence_file = resolved.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(resolved, ec)) {
     const std::string message = fmt::format("influence coefficient file '{}' not found", g.text(0));

@@ -90,6 +90,9 @@ RawProfile parse_table_profile(std::string_view text, const std::string& file, b
       if (!numeric) {
         const std::size_t eq = line.find('=');
         if (eq == std::string_view::npos) {
+          // Old-style headers: a keyword line such as 'MINIPROF 101 148 1994 3 24' or
+          // 'MINIWHEELPROF' (with or without a leading '#'), read and ignored as CONTACT does.
+          if (std::isalpha(static_cast<unsigned char>(line.front()))) continue;
           throw InputError(file, line_no, "expected 'Key=Value' in the Miniprof header",
                            std::string(line));
         }
@@ -97,7 +100,8 @@ RawProfile parse_table_profile(std::string_view text, const std::string& file, b
         const std::string_view value = trim(line.substr(eq + 1));
         if (key == "columndef") {
           columns = parse_column_def(value, file, line_no);
-        } else if (key == "xoffset" || key == "yoffset") {
+        } else if ((key == "xoffset" || key == "yoffset") && !value.empty()) {
+          // An empty value ('XOffset=') leaves the offset at 0.
           const auto v = parse_fortran_real(value);
           if (!v) {
             throw InputError(file, line_no, fmt::format("expected a number for {}", key),

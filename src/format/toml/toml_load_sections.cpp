@@ -12,6 +12,7 @@
 
 #include "format/inp/grid_extent.hpp"
 #include "format/inp/reader_checks.hpp"
+#include "format/text/file_names.hpp"
 #include "format/toml/toml_sections.hpp"
 
 namespace rollcontact::format::toml_input {
@@ -259,10 +260,8 @@ void read_material(Table& c, const Context& ctx, CaseRecord& p) {
   if (d.c == 9) {
     const auto file = t.opt_text("influence_file");
     if (!file) t.fail("missing required key 'influence_file' (influence = \"from_file\")");
-    const std::filesystem::path name(*file);
-    const std::filesystem::path resolved =
-        (name.is_absolute() || ctx.base_dir.empty()) ? name : ctx.base_dir / name;
-    m.influence_file = resolved.lexically_normal().string();
+    const std::filesystem::path resolved = resolve_input_name(ctx.base_dir, *file);
+    m.influence_file = resolved.string();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(resolved, ec)) {
       const std::string message = fmt::format("influence coefficient file '{}' not found", *file);

@@ -201,6 +201,16 @@ TEST(InpModule1, RZeroContinuesWithoutModuleLine) {
   EXPECT_DOUBLE_EQ(wr(cases, 1).motion.y, 3.0);
 }
 
+TEST(InpModule1, ProfileNamesWithWindowsSeparators) {
+  // Issue 18: 'profiles\rail_arc.txt' names profiles/rail_arc.txt on every platform, as in CONTACT.
+  std::string text = first_case();
+  text.replace(text.find("profiles/rail_arc.txt"), 21, "profiles\\rail_arc.txt");
+  const auto cases = read(text + " 0 MODULE\n");
+  ASSERT_EQ(cases.size(), 1u);
+  EXPECT_EQ(std::filesystem::path(wr(cases, 0).rail.path).filename(), "rail_arc.txt");
+  EXPECT_GE(wr(cases, 0).rail.profile.y.size(), 2u);
+}
+
 TEST(InpModule1, ErrorsInsideProfileFilesNameTheProfileFile) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_m1_profile_err";
   std::filesystem::create_directories(dir);

@@ -129,6 +129,22 @@ TEST(ProfileTable, MiniprofHeaderColumnsAndComments) {
   EXPECT_NE(w[0].find("x.ban:9"), std::string::npos);
 }
 
+TEST(ProfileTable, LegacyMiniprofHeaders) {
+  // Issue 18: an old-style keyword header line, an empty offset value, a '#MINIWHEELPROF' start.
+  std::vector<std::string> w;
+  const RawProfile old_style =
+      parse_table_profile("MINIPROF 101 148 1994 3 24\nXOffset=\nYOffset=0.5\n\n-10 1\n0 0\n10 1\n",
+                          "old.ban", true, w);
+  ASSERT_EQ(old_style.y.size(), 3u);
+  EXPECT_DOUBLE_EQ(old_style.shift_y, 0.0);
+  EXPECT_DOUBLE_EQ(old_style.shift_z, 0.5);
+  const RawProfile wheel = parse_table_profile(
+      "#MINIWHEELPROF\nColumnDef=X,Y\n\n30 -1\n0 0\n-30 -2\n", "w.whl", true, w);
+  EXPECT_EQ(wheel.y.size(), 3u);
+  // A header line that is neither a keyword line nor Key=Value is still an error.
+  EXPECT_THROW(parse_table_profile("12abc\n\n0 0\n1 1\n", "bad.ban", true, w), InputError);
+}
+
 TEST(ProfileTable, PlainTableErrorsAndAutoMirrorZ) {
   std::vector<std::string> w;
   EXPECT_THROW(parse_table_profile("1 2\n", "p.txt", false, w), InputError);
