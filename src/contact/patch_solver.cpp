@@ -25,6 +25,7 @@
 #include "simplified/prescribed_pressure.hpp"
 #include "simplified/simplified_solver.hpp"
 #include "tangential/kinematics.hpp"
+#include "tangential/leading_edge.hpp"
 
 namespace rollcontact {
 
@@ -236,6 +237,10 @@ class CaseSolver {
   tangential::TangentialResult solve_simplified(double cksi, double ceta, double cphi);
   tangential::TangentialResult solve_tangential(double cksi, double ceta, double cphi,
                                                 const Field* px0, const Field* py0);
+  void assemble_slip_at_zero_traction(tangential::TangentialSystem& sys, double cksi, double ceta,
+                                      double cphi);
+  void add_unshifted_displacement(const Field& px, const Field& py, const Field& pn, Field& ux,
+                                  Field& uy) const;
   void compute_totals(const tangential::TangentialResult* tang);
 
   const model::PatchProblem& problem_;
@@ -412,6 +417,76 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
   return res;
 }
 
+/// (u_x, u_y) += C·(p_x, p_y, p_n) with the unshifted coefficients (C_tn only when coupled).
+void CaseSolver::add_unshifted_displacement(const Field& px, const Field& py, const Field& pn,
+                                            Field& ux, Field& uy) const {
+  const std::size_t n = grid_.size();
+  Field tx(n), ty(n);
+  const double* in_t[2] = {px.data(), py.data()};
+  double* out[2] = {tx.data(), ty.data()};
+  tops_->a->apply(in_t, out);
+  for (std::size_t i = 0; i < n; ++i) {
+    ux[i] += tx[i];
+    uy[i] += ty[i];
+  }
+  if (!coupled_) return;
+  const double* in_n[1] = {pn.data()};
+  tops_->tn->apply(in_n, out);
+  for (std::size_t i = 0; i < n; ++i) {
+    ux[i] += tx[i];
+    uy[i] += ty[i];
+  }
+}
+
+/// b = the slip per step at p_t = 0: rigid shift, the pressure's tangential displacement (K ≠ 0)
+/// and, for shifts and transient rolling, minus the previous-time displacement of the particles;
+/// with the leading-edge correction of physics.md §9.4 for transient steps longer than δx.
+void CaseSolver::assemble_slip_at_zero_traction(tangential::TangentialSystem& sys, double cksi,
+                                                double ceta, double cphi) {
+  using namespace tangential;
+  const std::size_t n = grid_.size();
+  const model::TangentialKind kind = problem_.tangential.kind;
+  const RigidShift w = rigid_shift(grid_, problem_, sol_.kinematics, cksi, ceta, cphi);
+  sys.bx = w.wx;
+  sys.by = w.wy;
+  if (coupled_) {
+    // Tangential displacement per step due to the pressure (C_tn, or (C − C′)_tn when steady).
+    Field ux(n), uy(n);
+    const double* in[1] = {sol_.pn.data()};
+    double* out[2] = {ux.data(), uy.data()};
+    tops_->tn->apply(in, out);
+    for (std::size_t i = 0; i < n; ++i) {
+      sys.bx[i] += ux[i];
+      sys.by[i] += uy[i];
+    }
+  }
+  Field prev_ux(n, 0.0), prev_uy(n, 0.0);
+  if (kind != model::TangentialKind::SteadyRolling && prev_.present) {
+    // Displacement of the same particles at the previous time.
+    // Exact for any step with the shifted coefficients C′, also where the particles have
+    // left the grid (docs/decisions.md: CONTACT interpolates for fractional steps).
+    const double* in[3] = {prev_.px.data(), prev_.py.data(), prev_.pn.data()};
+    double* out[2] = {prev_ux.data(), prev_uy.data()};
+    tops_->prev->apply(in, out);
+    for (std::size_t i = 0; i < n; ++i) {
+      sys.bx[i] -= prev_ux[i];
+      sys.by[i] -= prev_uy[i];
+    }
+  }
+  if (kind != model::TangentialKind::TransientRolling) return;
+  const std::vector<LeadingEdgeEntry> entries =
+      leading_edge_entries(grid_, sys.contact, sol_.kinematics.chi, sol_.kinematics.dq);
+  if (entries.empty()) return;
+  // The previous displacement where the particles entered: C (unshifted) at the edge element.
+  Field edge_ux(n, 0.0), edge_uy(n, 0.0);
+  if (prev_.present) add_unshifted_displacement(prev_.px, prev_.py, prev_.pn, edge_ux, edge_uy);
+  for (const LeadingEdgeEntry& e : entries) {
+    const std::size_t i = e.element;
+    sys.bx[i] += (e.factor - 1.0) * w.wx[i] + prev_ux[i] - edge_ux[e.edge];
+    sys.by[i] += (e.factor - 1.0) * w.wy[i] + prev_uy[i] - edge_uy[e.edge];
+  }
+}
+
 tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ceta, double cphi,
                                                           const Field* px0, const Field* py0) {
   using namespace tangential;
@@ -424,31 +499,7 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
   sys.contact.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) sys.contact[i] = sol_.pn[i] > 0.0;
   friction_->traction_bounds(sol_.pn, sys.bound);
-  RigidShift w = rigid_shift(grid_, problem_, sol_.kinematics, cksi, ceta, cphi);
-  sys.bx = std::move(w.wx);
-  sys.by = std::move(w.wy);
-  if (coupled_) {
-    // Tangential displacement per step due to the pressure (C_tn, or (C − C′)_tn when steady).
-    Field ux(n), uy(n);
-    const double* in[1] = {sol_.pn.data()};
-    double* out[2] = {ux.data(), uy.data()};
-    tops_->tn->apply(in, out);
-    for (std::size_t i = 0; i < n; ++i) {
-      sys.bx[i] += ux[i];
-      sys.by[i] += uy[i];
-    }
-  }
-  if (kind != model::TangentialKind::SteadyRolling && prev_.present) {
-    // Displacement of the same particles at the previous time.
-    Field ux(n), uy(n);
-    const double* in[3] = {prev_.px.data(), prev_.py.data(), prev_.pn.data()};
-    double* out[2] = {ux.data(), uy.data()};
-    tops_->prev->apply(in, out);
-    for (std::size_t i = 0; i < n; ++i) {
-      sys.bx[i] -= ux[i];
-      sys.by[i] -= uy[i];
-    }
-  }
+  assemble_slip_at_zero_traction(sys, cksi, ceta, cphi);
 
   TangentialSettings settings;
   // With prescribed forces the Newton loop stops at |ΔF/(μFN)| ≤ EPS; the tangential solutions

@@ -31,19 +31,22 @@ EffectiveKinematics effective_kinematics(const model::PatchProblem& problem, con
   e.dq = k.step_mm;
   e.veloc = k.velocity_mm_per_s;
   const bool simplified = problem.bodies.compliance != model::TangentialCompliance::ExactHalfSpace;
-  const bool steady_grid_solver =
-      kind == model::TangentialKind::SteadyRolling &&
-      (select_solver(problem) == TangentialSolverKind::SteadyGS || simplified);
-  if (steady_grid_solver) {
-    // Steady rolling on a contact-fixed grid needs χ = 0 or π and δq = δx: the previous-time
-    // field is then the current one shifted by one element.
+  if (kind == model::TangentialKind::SteadyRolling) {
+    // Steady rolling is discretised with the step of one element whatever the solver: the
+    // time derivative of u is a difference over δq, and δq = δx is the finest the grid
+    // resolves (CONTACT does the same, also for ConvexGS: issue 18 item 5, decisions.md).
+    if (warnings && std::abs(e.dq - grid.dx) > 0.01 * grid.dx)
+      warnings->push_back(fmt::format("Using DQ = DX = {:.4g} instead of {:.4g}", grid.dx, e.dq));
+    e.dq = grid.dx;
+  }
+  if (kind == model::TangentialKind::SteadyRolling &&
+      (select_solver(problem) == TangentialSolverKind::SteadyGS || simplified)) {
+    // The grid-marching solvers need χ = 0 or π: the previous-time field is then the current
+    // one shifted by one element along a row.
     const bool near_zero = std::abs(std::remainder(e.chi, 2.0 * std::numbers::pi)) < 0.01;
     const bool near_pi =
         std::abs(std::remainder(e.chi - std::numbers::pi, 2.0 * std::numbers::pi)) < 0.01;
     if (!near_zero && !near_pi) e.chi = 0.0;
-    if (warnings && std::abs(e.dq - grid.dx) > 0.01 * grid.dx)
-      warnings->push_back(fmt::format("Using DQ = DX = {:.4g} instead of {:.4g}", grid.dx, e.dq));
-    e.dq = grid.dx;
   }
   e.dt = e.dq / e.veloc;
   return e;

@@ -14,11 +14,11 @@ EffectiveKinematics effective_kinematics(const CaseRecord& problem, const Soluti
   e.dq = kin.dq;
   e.veloc = kin.veloc;
   const bool simplified = dg.m == 2 || dg.m == 3 || (dg.m >= 5 && dg.m <= 7);
+  // Steady rolling: the step is one element whatever the solver (tangential/kinematics.cpp).
+  if (dg.t == 3) e.dq = solution.grid.dx;
   const bool grid_bound = dg.t == 3 && (simplified || dg.g != 2 || dg.m == 4);
   if (grid_bound) {
-    // Steady-state solvers march over grid columns: the step is one element and the rolling
-    // direction is +x or -x.
-    e.dq = solution.grid.dx;
+    // Steady-state solvers march over grid columns: the rolling direction is +x or -x.
     const double pi = std::numbers::pi;
     const double tol = simplified ? 1e-12 : 0.01;
     const double c = std::remainder(e.chi, 2.0 * pi);

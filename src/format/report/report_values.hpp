@@ -16,8 +16,8 @@ struct EffectiveKinematics {
   double dt = 1.0;     ///< [s]
 };
 
-/// Applies physics.md §14: T<=1 gives chi=0, dq=1, V=1; steady rolling with a grid-bound solver
-/// or a simplified theory uses dq = dx and chi in {0, pi}.
+/// Applies physics.md §14: T<=1 gives chi=0, dq=1, V=1; steady rolling uses dq = dx, and with a
+/// grid-bound solver or a simplified theory chi in {0, pi}.
 EffectiveKinematics effective_kinematics(const CaseRecord& problem, const Solution& solution);
 
 /// Static friction coefficient mu_s that scales relative forces (FX/FSTAT/FN): FSTAT for
