@@ -18,6 +18,12 @@ if(ROLLCONTACT_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
+if(ROLLCONTACT_SANITIZE_THREAD)
+  # ThreadSanitizer: the C library's concurrent handles (tests/cntc/test_cntc_threads.cpp).
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()
+
 if(ROLLCONTACT_FUZZ)
   if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
     message(FATAL_ERROR "ROLLCONTACT_FUZZ needs clang (libFuzzer): use the preset `fuzz`")

@@ -1,5 +1,6 @@
 # Install and export: `cmake --install build/<preset> --prefix <dir>` gives
-#   bin/rollcontact, include/rollcontact/** (the public API), lib/librollcontact_*.a and
+#   bin/rollcontact, include/rollcontact/** (the public API), lib/librollcontact_*.a,
+#   lib/librollcontact_cntc.so (the cntc_* C library; bin/contact_addon_linux64.so links to it) and
 #   lib/cmake/rollcontact/ (rollcontactConfig.cmake), so that another project can write
 #     find_package(rollcontact CONFIG REQUIRED)
 #     target_link_libraries(app PRIVATE rollcontact::rollcontact)
@@ -14,6 +15,12 @@ install(TARGETS rollcontact rollcontact_version rollcontact_grid rollcontact_for
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS rollcontact_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The CONTACT-compatible C library, also under CONTACT's file name in bin/ (python_intfc loads
+# $CONTACTDIR/bin/contact_addon_linux64.so).
+install(TARGETS rollcontact_cntc LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(CODE "file(MAKE_DIRECTORY \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}\")
+  file(CREATE_LINK ../${CMAKE_INSTALL_LIBDIR}/$<TARGET_FILE_NAME:rollcontact_cntc>
+       \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_BINDIR}/contact_addon_linux64.so\" SYMBOLIC)")
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/rollcontact DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${PROJECT_BINARY_DIR}/src/generated/rollcontact/version.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/rollcontact)

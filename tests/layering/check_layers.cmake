@@ -26,6 +26,8 @@ set(allowed_format/toml "format/toml;format/inp;format/text")
 set(allowed_format/report "format/report;format/inp;format/text")
 set(allowed_batch "batch;format/text;format/profiles;format/inp;format/toml;format/report;wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 
+set(allowed_bindings/c "bindings;format/inp;format/text;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
+
 set(violations "")
 function(check_folder folder files)
   foreach(f IN LISTS files)
@@ -53,7 +55,7 @@ function(check_folder folder files)
 endfunction()
 
 foreach(folder model core grid physics elastic elastic/operators geometry normal tangential simplified post contact wheelrail
-               format/text format/profiles format/inp format/toml format/report batch)
+               format/text format/profiles format/inp format/toml format/report batch bindings/c)
   file(GLOB files "${ROOT}/src/${folder}/*.hpp" "${ROOT}/src/${folder}/*.cpp")
   check_folder(${folder} "${files}")
 endforeach()

@@ -1,0 +1,154 @@
+/* rollcontact's CONTACT-compatible C library interface (the cntc_* routines).
+ *
+ * A program written for CONTACT's library (contact_addon.h, release 25.1) links or loads
+ * librollcontact_cntc.so — or the same library under CONTACT's file name
+ * contact_addon_linux64.so — without source changes. Conventions (spec library-api.md §1):
+ * every routine returns void and takes every argument by pointer; strings come with their
+ * length; arrays are caller-allocated, element numbering x fastest (j = ix + mx*(iy-1)).
+ * Result elements ire = 1..999 (module 1 wheel/rail or module 3 basic contact), contact
+ * problems icp = 1..9 in module 3, icp = -1 for a whole wheel/rail problem in module 1.
+ * Errors never abort: a bad handle or argument is logged and the outputs are left untouched;
+ * routines with an ierror argument return CONTACT's codes (CNTC_err_*).
+ *
+ * This release implements the life cycle, the settings and results of module 3 and the
+ * module-independent settings; the module-1 (wheel/rail) routines follow.
+ */
+#ifndef ROLLCONTACT_CONTACT_ADDON_H
+#define ROLLCONTACT_CONTACT_ADDON_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Interface version: 100*major + 10*minor + update of the CONTACT interface served. */
+#define CNTC_IFCVER 2520
+
+/* Unit conventions (flag CNTC_if_units). */
+#define CNTC_un_cntc 1934  /* mm, N, mm/s, rad; forces on body 1 (default) */
+#define CNTC_un_spck 1935  /* m, N, m/s, rad; forces on body 2 */
+#define CNTC_un_si 1936    /* m, N, m/s, rad; forces on body 1 */
+#define CNTC_un_imper 1937 /* not implemented: CONTACT units */
+
+/* Flag codes (cntc_setflags, cntc_getflags, cntc_setglobalflags). */
+#define CNTC_if_units 1933
+#define CNTC_ic_config 1967
+#define CNTC_ic_pvtime 1970
+#define CNTC_ic_bound 1971
+#define CNTC_ic_tang 1972
+#define CNTC_ic_norm 1973
+#define CNTC_ic_force 1974
+#define CNTC_ic_frclaw 1976
+#define CNTC_ic_discns 1977
+#define CNTC_ic_inflcf 1978
+#define CNTC_ic_mater 1979
+#define CNTC_ic_exrhs 1980
+#define CNTC_ic_xflow 1981
+#define CNTC_ic_heat 1982
+#define CNTC_ic_iestim 1983
+#define CNTC_ic_output 1984
+#define CNTC_ic_flow 1985
+#define CNTC_ic_return 1986
+#define CNTC_ic_matfil 1987
+#define CNTC_ic_sens 1988
+#define CNTC_ic_ifmeth 1989
+#define CNTC_ic_ifvari 1990
+#define CNTC_ic_sbsout 1991
+#define CNTC_ic_sbsfil 1992
+#define CNTC_ic_npomax 1993
+#define CNTC_if_idebug 2000
+#define CNTC_if_licdbg 2001
+#define CNTC_if_wrtinp 2002
+#define CNTC_if_openmp 2003
+#define CNTC_if_timers 2004
+#define CNTC_if_ncase 2005
+
+/* Field codes (cntc_getfielddata). */
+#define CNTC_fld_h 1
+#define CNTC_fld_mu 2
+#define CNTC_fld_px 3
+#define CNTC_fld_py 4
+#define CNTC_fld_pn 5
+#define CNTC_fld_ux 7
+#define CNTC_fld_uy 8
+#define CNTC_fld_un 9
+#define CNTC_fld_sx 15
+#define CNTC_fld_sy 16
+
+/* Error codes. */
+#define CNTC_err_allow -12
+#define CNTC_err_search -25
+#define CNTC_err_ftot -26
+#define CNTC_err_norm -27
+#define CNTC_err_tang -28
+#define CNTC_err_tol -29
+#define CNTC_err_icp -31
+#define CNTC_err_profil -32
+#define CNTC_err_frclaw -33
+#define CNTC_err_discr -34
+#define CNTC_err_input -39
+#define CNTC_err_other -99
+
+/* 2.1 Life cycle */
+void cntc_initializefirst(int *ifcver, int *ierror, int *ioutput, const char *c_wrkdir,
+                          const char *c_outdir, const char *c_expnam, int *len_wrkdir,
+                          int *len_outdir, int *len_expnam);
+void cntc_initializefirst_new(int *ifcver, int *ierror, int *ioutput, const char *c_wrkdir,
+                              const char *c_outdir, const char *c_expnam, int *len_wrkdir,
+                              int *len_outdir, int *len_expnam);
+void cntc_initialize(int *ire, int *imodul, int *ifcver, int *ierror, const char *c_outdir,
+                     int *len_outdir);
+void cntc_setfileunits(int *nunits, int *iunits);
+void cntc_setglobalflags(int *lenflg, int *params, int *values);
+void cntc_finalize(int *ire);
+void cntc_finalizelast(void);
+void cntc_getmaxnumthreads(int *mxthrd);
+
+/* 2.2 Configuration common to modules 1 and 3 */
+void cntc_setflags(int *ire, int *icp, int *lenflg, int *params, int *values);
+void cntc_getflags(int *ire, int *icp, int *nparam, int *iparam, int *values);
+void cntc_setsolverflags(int *ire, int *icp, int *gdigit, int *nints, int *iparam, int *nreals,
+                         double *rparam);
+void cntc_setmaterialparameters(int *ire, int *icp, int *mdigit, int *nparam, double *rparam);
+void cntc_settimestep(int *ire, int *icp, double *dt);
+void cntc_setrollingstepsize(int *ire, int *icp, double *chi, double *dq);
+void cntc_setfrictionmethod(int *ire, int *icp, int *imeth, int *nparam, double *params);
+void cntc_setpotcontact(int *ire, int *icp, int *ipotcn, int *nparam, double *rparam);
+void cntc_settangentialforces(int *ire, int *icp, double *fx, double *fy);
+
+/* 2.3 Module 3 only */
+void cntc_setreferencevelocity(int *ire, int *icp, double *veloc);
+void cntc_sethertzcontact(int *ire, int *icp, int *ipotcn, int *nparam, double *rparam);
+void cntc_setpenetration(int *ire, int *icp, double *pen);
+void cntc_setnormalforce(int *ire, int *icp, double *fn);
+void cntc_setundeformeddistc(int *ire, int *icp, int *ibase, int *nparam, double *prmudf);
+void cntc_setcreepages(int *ire, int *icp, double *vx, double *vy, double *phi);
+void cntc_gethertzcontact(int *ire, int *icp, int *lenarr, double *values);
+
+/* 2.7 Solving */
+void cntc_calculate(int *ire, int *icp, int *ierror);
+void cntc_calculate3(int *ire, int *icp, int *ierror);
+
+/* 2.9 Results per patch */
+void cntc_getreferencevelocity(int *ire, int *icp, double *veloc);
+void cntc_getnumelements(int *ire, int *icp, int *mx, int *my);
+void cntc_getgriddiscretization(int *ire, int *icp, double *dx, double *dy);
+void cntc_getpotcontact(int *ire, int *icp, int *lenarr, double *values);
+void cntc_getpenetration(int *ire, int *icp, double *pen);
+void cntc_getcreepages(int *ire, int *icp, double *vx, double *vy, double *phi);
+void cntc_getcontactforces(int *ire, int *icp, double *fn, double *tx, double *ty, double *mz);
+void cntc_getcontactpatchareas(int *ire, int *icp, double *carea, double *harea, double *sarea);
+void cntc_getelementdivision(int *ire, int *icp, int *lenarr, int *eldiv);
+void cntc_getmaximumpressure(int *ire, int *icp, double *pnmax);
+void cntc_getmaximumtraction(int *ire, int *icp, double *ptmax);
+void cntc_getfielddata(int *ire, int *icp, int *ifld, int *lenarr, double *fld);
+void cntc_gettractions(int *ire, int *icp, int *lenarr, double *pn, double *px, double *py);
+void cntc_getmicroslip(int *ire, int *icp, int *lenarr, double *sx, double *sy);
+void cntc_getdisplacements(int *ire, int *icp, int *lenarr, double *un, double *ux, double *uy);
+void cntc_getcalculationtime(int *ire, int *icp, double *tcpu, double *twall);
+void cntc_resetcalculationtime(int *ire, int *icp);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* ROLLCONTACT_CONTACT_ADDON_H */

@@ -1,0 +1,109 @@
+#pragma once
+// The state behind the cntc_* C interface (spec library-api.md §1): result elements (ire) with
+// their contact problems (icp), the units of each problem, the log, and the access rules of
+// §1.3. The handle table is process-wide because the C interface is: it is the one object of
+// its kind, reached through library(), and every access to it is under its mutex. Each
+// problem has its own lock for calculate, so that different (ire, icp) solve concurrently.
+
+#include <array>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "format/inp/case_record.hpp"
+#include "rollcontact/solution.hpp"
+#include "rollcontact/solve.hpp"
+
+namespace rollcontact::cntc {
+
+/// Scale factors of a unit convention: internal value = external value × factor (§1.4).
+struct Units {
+  int code = 1934;        ///< CNTC_un_*
+  double length = 1.0;    ///< mm per external length unit
+  double velocity = 1.0;  ///< mm/s per external velocity unit
+  double body = 1.0;      ///< +1: forces act on body 1; −1 (SIMPACK): on body 2
+  double area() const { return length * length; }
+  double pressure() const { return 1.0 / area(); }  ///< N/mm² per external pressure unit
+};
+
+/// Units for a CNTC_un_* code; false for an unknown code.
+bool units_for_code(int code, Units& units);
+
+/// One module-3 contact problem: the case as CONTACT's digits and blocks describe it, built by
+/// the setters; the solver that keeps its sequence; the last solution.
+struct Module3Problem {
+  format::CaseRecord record;
+  Units units;
+  bool grid_given = false;      ///< setpotcontact or sethertzcontact was called
+  bool geometry_given = false;  ///< setundeformeddistc was called
+  int cases = 0;                ///< calculations done
+  PatchSolver solver;
+  std::optional<Solution> result;
+  double cpu_seconds = 0.0, wall_seconds = 0.0;
+  std::mutex busy;  ///< held by calculate
+  Module3Problem();
+};
+
+struct ResultElement {
+  int module = 3;
+  std::array<std::unique_ptr<Module3Problem>, 10> problems;  ///< icp 1..9 (index 0 unused)
+};
+
+/// Access categories of the routines (§1.3 table).
+enum class Access {
+  Module3,        ///< cat 1: module 3, icp 1..9
+  Module1,        ///< cat 2: module 1, no icp
+  Module1Patch,   ///< cat 3
+  Module1Forces,  ///< cat 4
+  Settings,       ///< cat 5: module 1 icp = −1, module 3 icp 1..9
+  Results,        ///< cat 6: a patch, icp ≥ 1
+  Either,         ///< cat 7: −1 or a patch
+};
+
+/// The internal codes of a refused access (§1.3).
+constexpr int kBadIre = -101, kNotInModule1 = -102, kNotInModule3 = -103, kBadIcp = -104,
+              kNeedsPatch = -105, kNoPatchAllowed = -106;
+
+class Library {
+ public:
+  /// cntc_initializefirst: opens <outdir><expnam>.out (once; later calls only return).
+  void initialize_first(int output_to_screen, const std::string& wrkdir, const std::string& outdir,
+                        const std::string& expnam);
+  /// cntc_initialize: creates `ire` with module 1 or 3; −12 when 100 are active already.
+  int create(int ire, int module);
+  void finalize(int ire);
+  void finalize_last();
+
+  /// The module-3 problem (ire, icp) for a routine of category `access`, created if new;
+  /// nullptr and a logged message (code in *code when given) when the access is refused.
+  Module3Problem* module3(int ire, int icp, Access access, const char* routine,
+                          int* code = nullptr);
+
+  /// Appends a line to the log (the .out file; also stdout when asked for).
+  void log(const std::string& line);
+
+  int debug_level() const { return debug_level_; }
+  void set_debug_level(int level) { debug_level_ = level; }
+
+ private:
+  int check(int ire, int icp, Access access, int module) const;
+  ResultElement* element_or_create(int ire, int icp);
+
+  std::mutex mutex_;
+  bool initialised_ = false;
+  bool to_screen_ = false;
+  std::ofstream out_;
+  std::map<int, std::unique_ptr<ResultElement>> elements_;
+  int debug_level_ = 0;
+};
+
+/// The library's handle table (the C interface has no other place to keep it).
+Library& library();
+
+/// A C string argument: at most `len` characters, up to the first NUL; blank means empty.
+std::string c_string(const char* s, const int* len);
+
+}  // namespace rollcontact::cntc

@@ -1,0 +1,497 @@
+// cntc_* settings of module 3 and the module-independent ones (spec library-api.md §2.2–2.3).
+// Each setter writes the problem's CaseRecord — the case as CONTACT's digits and blocks describe
+// it — in internal units (mm, N, s, rad), so that calculate solves exactly what the same .inp
+// case would. A call with a wrong parameter count or method code is refused: logged, nothing
+// stored (§2: "rejected"); values out of range are clamped silently, as CONTACT does.
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "bindings/c/cntc_export.hpp"
+#include "bindings/c/cntc_library.hpp"
+
+namespace rollcontact::cntc {
+namespace {
+
+Module3Problem* problem(const int* ire, const int* icp, Access access, const char* routine) {
+  if (ire == nullptr || icp == nullptr) {
+    library().log(fmt::format("{}: null handle argument (refused)", routine));
+    return nullptr;
+  }
+  return library().module3(*ire, *icp, access, routine);
+}
+
+void reject(const char* routine, const std::string& why) {
+  library().log(fmt::format("{}: {} (refused, nothing changed)", routine, why));
+}
+
+int clamp(int v, int lo, int hi) {
+  return std::clamp(v, lo, hi);
+}
+
+/// One flag of cntc_setflags for a module-3 problem.
+void set_flag(Module3Problem& p, int code, int value) {
+  format::ControlDigits& d = p.record.digits;
+  switch (code) {
+    case 0:
+      return;
+    case CNTC_if_units: {
+      Units u;
+      if (units_for_code(value, u))
+        p.units = u;
+      else
+        library().log(fmt::format("cntc_setflags: unit convention {} unknown (kept)", value));
+      return;
+    }
+    case CNTC_ic_pvtime:
+      d.p = clamp(value, 0, 3);
+      return;
+    case CNTC_ic_bound:
+      d.b = clamp(value, 0, 6);
+      return;
+    case CNTC_ic_tang:
+      d.t = clamp(value, 0, 3);
+      return;
+    case CNTC_ic_norm:
+      d.n = clamp(value, 0, 1);
+      return;
+    case CNTC_ic_force:
+      d.f = clamp(value, 0, 2);
+      return;
+    case CNTC_ic_inflcf:
+      if (value >= 2 && value <= 4) p.record.materials.influence_type = value;
+      return;
+    case CNTC_ic_exrhs:
+      d.e = clamp(value, 0, 3);
+      return;
+    case CNTC_ic_iestim:
+      d.i = clamp(value, 0, 3);
+      return;
+    case CNTC_ic_matfil:
+      d.a = value >= 0 && value <= 2 ? value : 0;
+      return;
+    case CNTC_ic_output:
+      d.o = clamp(value, 0, 5);
+      return;
+    case CNTC_ic_flow:
+      d.w = clamp(value, 0, 9);
+      return;
+    case CNTC_ic_return:
+      d.r = clamp(value, 0, 3);
+      return;
+    case CNTC_if_ncase:
+      p.cases = std::max(0, value - 1);
+      return;
+    case CNTC_if_idebug:
+      library().set_debug_level(value);
+      return;
+    case CNTC_ic_discns:  // module 3 grids come from setpotcontact/sethertzcontact
+    case CNTC_ic_mater:   // M is set by setmaterialparameters
+    case CNTC_ic_sens:
+    case CNTC_ic_sbsout:
+    case CNTC_ic_sbsfil:
+    case CNTC_ic_xflow:
+    case CNTC_if_licdbg:
+    case CNTC_if_openmp:
+    case CNTC_if_wrtinp:
+    case CNTC_if_timers:
+    case CNTC_ic_ifmeth:
+    case CNTC_ic_ifvari:
+      return;
+    default:
+      library().log(fmt::format("cntc_setflags: unknown parameter code {} ignored", code));
+  }
+}
+
+/// The value of one flag for cntc_getflags; false for an unknown code.
+bool get_flag(const Module3Problem& p, int code, int& value) {
+  const format::ControlDigits& d = p.record.digits;
+  switch (code) {
+    case CNTC_if_units:
+      value = p.units.code;
+      return true;
+    case CNTC_ic_pvtime:
+      value = d.p;
+      return true;
+    case CNTC_ic_bound:
+      value = d.b;
+      return true;
+    case CNTC_ic_tang:
+      value = d.t;
+      return true;
+    case CNTC_ic_norm:
+      value = d.n;
+      return true;
+    case CNTC_ic_force:
+      value = d.f;
+      return true;
+    case CNTC_ic_frclaw:
+      value = p.record.friction.law;
+      return true;
+    case CNTC_ic_discns:
+      value = d.d;
+      return true;
+    case CNTC_ic_inflcf:
+      value = p.record.materials.influence_type;
+      return true;
+    case CNTC_ic_mater:
+      value = d.m;
+      return true;
+    case CNTC_ic_heat:
+      value = d.h;
+      return true;
+    case CNTC_ic_iestim:
+      value = d.i;
+      return true;
+    case CNTC_ic_matfil:
+      value = d.a;
+      return true;
+    case CNTC_ic_output:
+      value = d.o;
+      return true;
+    case CNTC_ic_flow:
+      value = d.w;
+      return true;
+    case CNTC_ic_return:
+      value = d.r;
+      return true;
+    case CNTC_ic_exrhs:
+      value = d.e;
+      return true;
+    case CNTC_if_ncase:
+      value = p.cases;
+      return true;
+    default:
+      return false;
+  }
+}
+
+/// Combined difference parameter K of the bodies (physics.md §3.1) for the MAXOUT rule.
+double difference_parameter(const format::Materials& m) {
+  const double g = 2.0 / (1.0 / m.gg1 + 1.0 / m.gg2);
+  return 0.25 * g * ((1.0 - 2.0 * m.poiss1) / m.gg1 - (1.0 - 2.0 * m.poiss2) / m.gg2);
+}
+
+}  // namespace
+}  // namespace rollcontact::cntc
+
+using namespace rollcontact::cntc;
+
+CNTC_EXPORT void cntc_setflags(int* ire, int* icp, int* lenflg, int* params, int* values) {
+  Module3Problem* p = problem(ire, icp, Access::Settings, "cntc_setflags");
+  if (p == nullptr) return;
+  if (lenflg == nullptr || (*lenflg > 0 && (params == nullptr || values == nullptr)))
+    return reject("cntc_setflags", "null array");
+  for (int i = 0; i < *lenflg; ++i) set_flag(*p, params[i], values[i]);
+}
+
+CNTC_EXPORT void cntc_getflags(int* ire, int* icp, int* nparam, int* iparam, int* values) {
+  Module3Problem* p = problem(ire, icp, Access::Either, "cntc_getflags");
+  if (p == nullptr || nparam == nullptr ||
+      (*nparam > 0 && (iparam == nullptr || values == nullptr)))
+    return;
+  for (int i = 0; i < *nparam; ++i) {
+    if (iparam[i] == 0) continue;
+    int v = 0;
+    if (get_flag(*p, iparam[i], v))
+      values[i] = v;
+    else
+      library().log(fmt::format("cntc_getflags: unknown parameter code {}", iparam[i]));
+  }
+}
+
+CNTC_EXPORT void cntc_setsolverflags(int* ire, int* icp, int* gdigit, int* nints, int* iparam,
+                                     int* nreals, double* rparam) {
+  constexpr const char* name = "cntc_setsolverflags";
+  Module3Problem* p = problem(ire, icp, Access::Settings, name);
+  if (p == nullptr) return;
+  if (gdigit == nullptr || nints == nullptr || nreals == nullptr)
+    return reject(name, "null argument");
+  const int g = *gdigit;
+  static constexpr int ni[] = {4, 0, 5, 5, 5, 5, 1}, nr[] = {1, 0, 4, 4, 2, 8, 1};
+  if (g < 0 || g > 6) return reject(name, fmt::format("G = {} outside 0..6", g));
+  if (*nints != ni[g] || *nreals != nr[g])
+    return reject(name, fmt::format("G = {} needs nints = {}, nreals = {}", g, ni[g], nr[g]));
+  if ((ni[g] > 0 && iparam == nullptr) || (nr[g] > 0 && rparam == nullptr))
+    return reject(name, "null array");
+  if (g == 1 || g == 6) return;  // keep; sensitivity settings (not computed here)
+  rollcontact::format::SolverSettings& s = p->record.solver;
+  p->record.digits.g = g;
+  s.method = g;
+  s.maxgs = std::max(1, iparam[0]);
+  s.maxin = std::max(1, iparam[1]);
+  s.maxnr = std::max(1, iparam[2]);
+  s.maxout = std::max(1, iparam[3]);
+  s.eps = std::max(1e-20, rparam[0]);
+  if (g == 2 || g == 3) {
+    s.inislp = iparam[4];
+    s.omega_h = std::max(1e-20, rparam[1]);
+    s.omega_s = std::max(1e-20, rparam[2]);
+    s.omgslp = std::max(1e-20, rparam[3]);
+  } else if (g == 4) {
+    s.inislp = iparam[4];
+    s.omgslp = std::max(1e-20, rparam[1]);
+  }
+}
+
+CNTC_EXPORT void cntc_setmaterialparameters(int* ire, int* icp, int* mdigit, int* nparam,
+                                            double* rparam) {
+  constexpr const char* name = "cntc_setmaterialparameters";
+  Module3Problem* p = problem(ire, icp, Access::Settings, name);
+  if (p == nullptr) return;
+  if (mdigit == nullptr || nparam == nullptr) return reject(name, "null argument");
+  const int m = *mdigit;
+  static constexpr int needed[] = {4, 8, 8, 7, 8, 7, 4, 4};
+  if (m >= 10 && m <= 12) {
+    // Damping digit M2: only "no damping" and "keep" without parameters here.
+    if (m == 12) return reject(name, "damping M2 = 2 not supported yet");
+    if (*nparam > 1) return reject(name, fmt::format("M2 = {} takes 0 or 1 parameters", m - 10));
+    p->record.digits.m2 = m - 10;
+    return;
+  }
+  if (m < 0 || m > 7) return reject(name, fmt::format("M = {} outside 0..7 and 10..12", m));
+  if (*nparam != needed[m])
+    return reject(name, fmt::format("M = {} needs nparam = {}", m, needed[m]));
+  if (rparam == nullptr) return reject(name, "null array");
+  rollcontact::format::Materials& mat = p->record.materials;
+  const Units& u = p->units;
+  mat.poiss1 = rparam[0];
+  mat.poiss2 = rparam[1];
+  mat.gg1 = rparam[2] * u.pressure();
+  mat.gg2 = rparam[3] * u.pressure();
+  mat.model_params = {};
+  for (int k = 4; k < *nparam; ++k) mat.model_params[static_cast<std::size_t>(k - 4)] = rparam[k];
+  if (m == 2) mat.model_params[0] *= u.length * u.length * u.length;  // flx [L³/F]
+  p->record.digits.m = m;
+  // MAXOUT follows the coupling of the bodies (§2.2).
+  const double ak = std::abs(difference_parameter(mat));
+  int& maxout = p->record.solver.maxout;
+  if (ak < 1e-4 && maxout >= 2) maxout = 1;
+  if (ak >= 1e-4 && maxout <= 1) maxout = 10;
+}
+
+CNTC_EXPORT void cntc_settimestep(int* ire, int* icp, double* dt) {
+  Module3Problem* p = problem(ire, icp, Access::Settings, "cntc_settimestep");
+  if (p == nullptr || dt == nullptr) return;
+  // dt only scales the frictional power of shifts (T = 0, 1), which rollcontact reports per
+  // step (outputs.md §4); kept for the interface.
+}
+
+CNTC_EXPORT void cntc_setrollingstepsize(int* ire, int* icp, double* chi, double* dq) {
+  Module3Problem* p = problem(ire, icp, Access::Settings, "cntc_setrollingstepsize");
+  if (p == nullptr || chi == nullptr || dq == nullptr) return;
+  p->record.kinematics.chi = *chi;
+  p->record.kinematics.dq = *dq * p->units.length;
+}
+
+CNTC_EXPORT void cntc_setfrictionmethod(int* ire, int* icp, int* imeth, int* nparam,
+                                        double* params) {
+  constexpr const char* name = "cntc_setfrictionmethod";
+  Module3Problem* p = problem(ire, icp, Access::Settings, name);
+  if (p == nullptr) return;
+  if (imeth == nullptr || nparam == nullptr) return reject(name, "null argument");
+  const int v = *imeth / 10, law = *imeth % 10;
+  if (*imeth < 0 || v != 0)
+    return reject(name, fmt::format("imeth = {}: module 3 takes V = 0 only", *imeth));
+  static constexpr int needed[] = {2, 0, 7, 7, 7, 3, 6};
+  if (law > 6) return reject(name, fmt::format("L = {} outside 0..6", law));
+  if (*nparam != needed[law])
+    return reject(name, fmt::format("L = {} needs nparam = {}", law, needed[law]));
+  if (needed[law] > 0 && params == nullptr) return reject(name, "null array");
+  rollcontact::format::Friction& f = p->record.friction;
+  const Units& u = p->units;
+  switch (law) {
+    case 0: {  // the smaller of FSTAT, FKIN for both
+      const double mu = std::max(1e-6, std::min(params[0], params[1]));
+      f = {};
+      f.law = 0;
+      f.fstat = f.fkin = mu;
+      break;
+    }
+    case 1:
+      return;  // keep
+    case 2:
+    case 3:
+    case 4:
+      f = {};
+      f.law = law;
+      f.fkin = std::max(1e-6, params[0]);
+      f.params = {std::max(0.0, params[1]), std::max(1e-4, params[2] * u.velocity),
+                  std::max(0.0, params[3]), std::max(1e-4, params[4] * u.velocity)};
+      f.memdst = std::max(0.0, params[5] * u.length);
+      f.mem_s0 = std::max(0.0, params[6] * u.velocity);
+      f.fstat = f.fkin + f.params[0] + f.params[2];
+      break;
+    case 5: {  // Polach, stored as the exponential law L = 4
+      const double fstat = params[0], a = params[1], b = params[2] / u.velocity;
+      f = {};
+      f.law = 4;
+      f.fkin = std::max(1e-6, a * fstat);
+      f.params = {fstat - f.fkin, std::log(2.0) / b, 0.0, 10000.0};
+      f.memdst = 0.001;
+      f.mem_s0 = 10.0;
+      f.fstat = fstat;
+      break;
+    }
+    default:
+      f = {};
+      f.law = 6;
+      f.fkin = f.fstat = std::max(1e-6, params[0]);
+      f.params = {params[1], std::max(1e-6 - f.fkin, params[2]), params[3], 0.0};
+      f.memdst = std::max(0.0, params[4] * u.length);
+      f.mem_s0 = std::max(0.0, params[5] * u.velocity);
+  }
+  p->record.digits.l = f.law;
+}
+
+CNTC_EXPORT void cntc_setpotcontact(int* ire, int* icp, int* ipotcn, int* nparam, double* rparam) {
+  constexpr const char* name = "cntc_setpotcontact";
+  Module3Problem* p = problem(ire, icp, Access::Settings, name);
+  if (p == nullptr) return;
+  if (ipotcn == nullptr || nparam == nullptr) return reject(name, "null argument");
+  if (*ipotcn < 1 || *ipotcn > 4 || *nparam != 6)
+    return reject(name, fmt::format("ipotcn = {}, nparam = {}: module 3 takes ipotcn 1..4 with "
+                                    "6 parameters",
+                                    *ipotcn, *nparam));
+  if (rparam == nullptr) return reject(name, "null array");
+  rollcontact::model::PotentialContact& pc = p->record.potential;
+  pc.ipotcn = *ipotcn;
+  pc.mx = std::max(1, static_cast<int>(std::lround(rparam[0])));
+  pc.my = std::max(1, static_cast<int>(std::lround(rparam[1])));
+  for (std::size_t k = 0; k < 4; ++k) pc.values[k] = rparam[k + 2] * p->units.length;
+  p->grid_given = true;
+}
+
+CNTC_EXPORT void cntc_settangentialforces(int* ire, int* icp, double* fx, double* fy) {
+  Module3Problem* p = problem(ire, icp, Access::Settings, "cntc_settangentialforces");
+  if (p == nullptr || fx == nullptr || fy == nullptr) return;
+  double x = *fx, y = *fy;
+  const double length = std::hypot(x, y);
+  if (length > 1.0) {
+    x /= length;
+    y /= length;
+  }
+  p->record.kinematics.fx_rel = x;
+  p->record.kinematics.fy_rel = y;
+}
+
+CNTC_EXPORT void cntc_setreferencevelocity(int* ire, int* icp, double* veloc) {
+  Module3Problem* p = problem(ire, icp, Access::Module3, "cntc_setreferencevelocity");
+  if (p == nullptr || veloc == nullptr) return;
+  p->record.kinematics.veloc = std::max(1e-9, std::abs(*veloc) * p->units.velocity);
+}
+
+CNTC_EXPORT void cntc_sethertzcontact(int* ire, int* icp, int* ipotcn, int* nparam,
+                                      double* rparam) {
+  constexpr const char* name = "cntc_sethertzcontact";
+  Module3Problem* p = problem(ire, icp, Access::Module3, name);
+  if (p == nullptr) return;
+  if (ipotcn == nullptr || nparam == nullptr) return reject(name, "null argument");
+  const int ip = *ipotcn;
+  if (ip < -6 || ip > -1) return reject(name, fmt::format("ipotcn = {} outside -6..-1", ip));
+  const int needed = ip == -6 ? 6 : 5;
+  if (*nparam != needed)
+    return reject(name, fmt::format("ipotcn = {} needs nparam = {}", ip, needed));
+  if (rparam == nullptr) return reject(name, "null array");
+  const double len = p->units.length;
+  rollcontact::model::PotentialContact& pc = p->record.potential;
+  pc.ipotcn = ip;
+  pc.mx = std::max(1, static_cast<int>(std::lround(rparam[0])));
+  pc.my = std::max(1, static_cast<int>(std::lround(rparam[1])));
+  pc.values = {};
+  // Per value: lengths scale with L, curvatures [1/L] inversely, ratios not at all.
+  for (int k = 2; k < needed; ++k) {
+    const bool last = k == needed - 1;  // SCALE [-]
+    const bool curvature = (k == 2 && (ip == -1 || ip == -2 || ip == -4)) || (k == 3 && ip == -1);
+    const bool ratio = last || (k == 3 && ip == -2);
+    double value = rparam[k];
+    if (curvature)
+      value = std::max(1e-12, value / len);
+    else if (!ratio)
+      value = std::max(1e-6, value * len);
+    else
+      value = std::max(1e-6, value);
+    pc.values[static_cast<std::size_t>(k - 2)] = value;
+  }
+  if (ip == -4 || ip == -5) p->record.digits.b = 2;
+  p->grid_given = true;
+}
+
+CNTC_EXPORT void cntc_setpenetration(int* ire, int* icp, double* pen) {
+  Module3Problem* p = problem(ire, icp, Access::Module3, "cntc_setpenetration");
+  if (p == nullptr || pen == nullptr) return;
+  p->record.digits.n = 0;
+  p->record.kinematics.pen = *pen * p->units.length;
+}
+
+CNTC_EXPORT void cntc_setnormalforce(int* ire, int* icp, double* fn) {
+  Module3Problem* p = problem(ire, icp, Access::Module3, "cntc_setnormalforce");
+  if (p == nullptr || fn == nullptr) return;
+  p->record.digits.n = 1;
+  p->record.kinematics.fn = *fn;
+}
+
+CNTC_EXPORT void cntc_setundeformeddistc(int* ire, int* icp, int* ibase, int* nparam,
+                                         double* prmudf) {
+  constexpr const char* name = "cntc_setundeformeddistc";
+  Module3Problem* p = problem(ire, icp, Access::Module3, name);
+  if (p == nullptr) return;
+  if (ibase == nullptr || nparam == nullptr || (*nparam > 0 && prmudf == nullptr))
+    return reject(name, "null argument");
+  const double len = p->units.length;
+  rollcontact::model::UndeformedDistance g;
+  g.ibase = *ibase;
+  const int n = *nparam;
+  switch (*ibase) {
+    case 1:  // b1..b3 [1/L], b4, b5 [-], b6 [L]
+      if (n != 6) return reject(name, "ibase = 1 needs nparam = 6");
+      g.coeffs = {prmudf[0] / len, prmudf[1] / len, prmudf[2] / len,
+                  prmudf[3],       prmudf[4],       prmudf[5] * len};
+      break;
+    case 2: {  // nn, xm, rm, y1, dy1, h(1..nn) [L]
+      if (n < 5) return reject(name, "ibase = 2 needs nparam = 5 + nn");
+      const int nn = static_cast<int>(std::lround(prmudf[0]));
+      if (nn < 1 || n != 5 + nn) return reject(name, "ibase = 2 needs nparam = 5 + nn");
+      g.xm = prmudf[1] * len;
+      g.rm = prmudf[2] * len;
+      g.y1 = prmudf[3] * len;
+      g.dy1 = prmudf[4] * len;
+      for (int k = 0; k < nn; ++k) g.coeffs.push_back(prmudf[5 + k] * len);
+      break;
+    }
+    case 3:  // b1 [L], b2 [1/L], b3, b4 [L], b5 [1/L], b6, b7, b8 [L]
+      if (n != 8) return reject(name, "ibase = 3 needs nparam = 8");
+      g.coeffs = {prmudf[0] * len, prmudf[1] / len, prmudf[2] * len, prmudf[3] * len,
+                  prmudf[4] / len, prmudf[5] * len, prmudf[6] * len, prmudf[7] * len};
+      break;
+    case 9: {
+      const auto& pc = p->record.potential;
+      if (!p->grid_given || pc.ipotcn < 0)
+        return reject(name, "ibase = 9 needs the potential contact (setpotcontact) first");
+      if (n != pc.mx * pc.my)
+        return reject(name, fmt::format("ibase = 9 needs nparam = mx*my = {}", pc.mx * pc.my));
+      g.values.assign(prmudf, prmudf + n);
+      for (double& v : g.values) v *= len;
+      break;
+    }
+    default:
+      return reject(name, fmt::format("ibase = {} not one of 1, 2, 3, 9", *ibase));
+  }
+  p->record.geometry = std::move(g);
+  p->geometry_given = true;
+}
+
+CNTC_EXPORT void cntc_setcreepages(int* ire, int* icp, double* vx, double* vy, double* phi) {
+  Module3Problem* p = problem(ire, icp, Access::Module3, "cntc_setcreepages");
+  if (p == nullptr || vx == nullptr || vy == nullptr || phi == nullptr) return;
+  rollcontact::format::Kinematics& k = p->record.kinematics;
+  const Units& u = p->units;
+  const bool shift = p->record.digits.t == 1;
+  // Shifts [L] and a rotation [rad], or creepages [-] and spin [A/L]; the body sign as on
+  // output, so that a value set is the value read back.
+  k.cksi = u.body * *vx * (shift ? u.length : 1.0);
+  k.ceta = u.body * *vy * (shift ? u.length : 1.0);
+  k.cphi = u.body * *phi / (shift ? 1.0 : u.length);
+}

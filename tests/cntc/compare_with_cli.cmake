@@ -1,0 +1,27 @@
+# Runs `rollcontact run INPUT` and the C client (MODE link or dlopen LIBRARY) and requires the
+# same FN, FX, FY, MZ: both build the same problem and solve it with the same code, so the
+# numbers must agree to round-off (1e-12 relative to FN; the client compares).
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+execute_process(COMMAND ${CLI} run -q -o ${WORK_DIR} ${INPUT} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "rollcontact run failed (${rc})")
+endif()
+get_filename_component(stem ${INPUT} NAME_WE)
+file(READ ${WORK_DIR}/${stem}.json json)
+foreach(q fn fx fy mz)
+  string(JSON cli_${q} GET "${json}" cases 0 totals ${q})
+endforeach()
+set(expected ${cli_fn} ${cli_fx} ${cli_fy} ${cli_mz})
+if(MODE STREQUAL "dlopen")
+  set(args dlopen ${LIBRARY} ${expected})
+else()
+  set(args link ${expected})
+endif()
+execute_process(COMMAND ${CLIENT} ${args} WORKING_DIRECTORY ${WORK_DIR}
+                OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc)
+message(STATUS "rollcontact run: ${expected}")
+message(STATUS "C client:        ${out}")
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "C client (${MODE}) failed (${rc}): ${err}")
+endif()
