@@ -10,8 +10,9 @@
  * Errors never abort: a bad handle or argument is logged and the outputs are left untouched;
  * routines with an ierror argument return CONTACT's codes (CNTC_err_*).
  *
- * This release implements the life cycle, the settings and results of module 3 and the
- * module-independent settings; the module-1 (wheel/rail) routines follow.
+ * This release implements the life cycle, the settings and per-patch results of modules 1
+ * and 3, and module 1's track, wheelset, profile and total-force routines; see
+ * docs/c-library.md for what is not served yet.
  */
 #ifndef ROLLCONTACT_CONTACT_ADDON_H
 #define ROLLCONTACT_CONTACT_ADDON_H
@@ -124,9 +125,31 @@ void cntc_setundeformeddistc(int *ire, int *icp, int *ibase, int *nparam, double
 void cntc_setcreepages(int *ire, int *icp, double *vx, double *vy, double *phi);
 void cntc_gethertzcontact(int *ire, int *icp, int *lenarr, double *values);
 
+/* 2.4 Module 1 only: track, wheelset, vertical force */
+void cntc_setverticalforce(int *ire, double *fz);
+void cntc_settrackdimensions(int *ire, int *ztrack, int *nparam, double *rparam);
+void cntc_setwheelsetdimensions(int *ire, int *ewheel, int *nparam, double *rparam);
+void cntc_setwheelsetposition(int *ire, int *ewheel, int *nparam, double *rparam);
+void cntc_setwheelsetvelocity(int *ire, int *ewheel, int *nparam, double *rparam);
+void cntc_setwheelsetflexibility(int *ire, int *ewheel, int *nparam, double *rparam);
+void cntc_getwheelsetposition(int *ire, int *lenarr, double *values);
+void cntc_getwheelsetvelocity(int *ire, int *lenarr, double *values);
+
+/* 2.5 Module 1 only: profiles */
+void cntc_setprofileinputfname(int *ire, const char *c_fname, int *len_fname, int *nints,
+                               int *iparam, int *nreals, double *rparam);
+void cntc_setprofileinputvalues(int *ire, int *npoint, double *values, int *nints, int *iparam,
+                                int *nreals, double *rparam);
+
 /* 2.7 Solving */
 void cntc_calculate(int *ire, int *icp, int *ierror);
+void cntc_calculate1(int *ire, int *ierror);
 void cntc_calculate3(int *ire, int *icp, int *ierror);
+
+/* 2.8 Results (module 1 totals) */
+void cntc_getnumcontactpatches(int *ire, int *npatch);
+void cntc_getglobalforces(int *ire, int *icp, int *lenarr, double *values);
+void cntc_getcontactlocation(int *ire, int *icp, int *lenarr, double *values);
 
 /* 2.9 Results per patch */
 void cntc_getreferencevelocity(int *ire, int *icp, double *veloc);

@@ -88,11 +88,13 @@ TEST(CntcErrors, BadHandlesAndEarlyGettersLeaveOutputsAlone) {
   // A module-3 problem without a potential contact cannot be calculated.
   cntc_calculate(&ire, &icp, &ierror);
   EXPECT_EQ(ierror, CNTC_err_discr);
-  // Module-1 elements refuse module-3 routines (here: all, until module 1 is served).
+  // A module-1 element: calculate takes icp = -1 only, and first needs its profiles.
   int ire1 = 32, minus1 = -1, imodul = 1, ifcver = 0, one = 1;
   cntc_initialize(&ire1, &imodul, &ifcver, &ierror, " ", &one);
+  cntc_calculate(&ire1, &one, &ierror);
+  EXPECT_EQ(ierror, -106);
   cntc_calculate(&ire1, &minus1, &ierror);
-  EXPECT_EQ(ierror, -102);
+  EXPECT_EQ(ierror, CNTC_err_profil);
   for (int e : {31, 32}) cntc_finalize(&e);
 }
 

@@ -26,7 +26,7 @@ set(allowed_format/toml "format/toml;format/inp;format/text")
 set(allowed_format/report "format/report;format/inp;format/text")
 set(allowed_batch "batch;format/text;format/profiles;format/inp;format/toml;format/report;wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 
-set(allowed_bindings/c "bindings;format/inp;format/text;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
+set(allowed_bindings/c "bindings;format/inp;format/profiles;format/text;wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 
 set(violations "")
 function(check_folder folder files)

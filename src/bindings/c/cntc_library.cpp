@@ -60,6 +60,23 @@ Module3Problem::Module3Problem() {
   record.result_element = 0;
 }
 
+Module1Problem::Module1Problem() {
+  // A fresh wheel/rail problem: right wheel on a track, steady rolling with the vertical force
+  // given (the usual MBS call sequence sets these again), no profiles yet.
+  format::ControlDigits& d = record.digits;
+  d.p = 2;
+  d.t = 3;
+  d.n = 1;
+  d.d = 2;
+  d.c = 2;
+  d.a = 0;
+  d.o = 0;
+  d.w = 1;
+  d.z = 3;
+  d.e = 3;
+  record.config = 1;
+}
+
 std::string c_string(const char* s, const int* len) {
   if (s == nullptr || len == nullptr || *len <= 0) return {};
   const std::size_t n = static_cast<std::size_t>(*len);
@@ -79,6 +96,7 @@ void Library::initialize_first(int output_to_screen, const std::string& wrkdir,
   fs::path work = wrkdir;
   if (work.empty() && fs::path(name).has_parent_path()) work = fs::path(name).parent_path();
   name = fs::path(name).filename().string();
+  work_ = work.empty() ? fs::current_path() : work;
   fs::path dir =
       outdir.empty() ? work : (fs::path(outdir).is_absolute() ? fs::path(outdir) : work / outdir);
   out_.open(dir / (name + ".out"), std::ios::trunc);  // a failed open is not an error (§1.6)
@@ -125,6 +143,11 @@ void Library::finalize_last() {
   initialised_ = false;
 }
 
+std::filesystem::path Library::working_folder() {
+  std::lock_guard lock(mutex_);
+  return work_.empty() ? std::filesystem::current_path() : work_;
+}
+
 void Library::log(const std::string& line) {
   std::lock_guard lock(mutex_);
   if (out_) out_ << line << '\n' << std::flush;
@@ -163,22 +186,26 @@ ResultElement* Library::element_or_create(int ire, int icp) {
   return elements_.emplace(ire, std::move(e)).first->second.get();
 }
 
-Module3Problem* Library::module3(int ire, int icp, Access access, const char* routine, int* code) {
+Target Library::open(int ire, int icp, Access access, const char* routine, int* code) {
   initialize_first(0, "", "", "");  // implicit set-up (§1.3); returns when done already
   int status = 0;
-  Module3Problem* problem = nullptr;
+  Target target;
+  target.icp = icp;
   {
     std::lock_guard lock(mutex_);
     ResultElement* e = ire >= 1 && ire <= 999 ? element_or_create(ire, icp) : nullptr;
     status =
         e == nullptr ? (ire < 1 || ire > 999 ? kBadIre : -12) : check(ire, icp, access, e->module);
-    if (status == 0 && e->module == 1) status = kNotInModule1;  // module 1 comes with issue 12
-    if (status == 0) {
+    if (status == 0 && e->module == 3) {
       auto& slot = e->problems[static_cast<std::size_t>(icp)];
       if (!slot) slot = std::make_unique<Module3Problem>();
       slot->record.result_element = ire;
       slot->record.contact_problem = icp;
-      problem = slot.get();
+      target.m3 = slot.get();
+    } else if (status == 0) {
+      if (!e->wheel_rail) e->wheel_rail = std::make_unique<Module1Problem>();
+      e->wheel_rail->record.result_element = ire;
+      target.m1 = e->wheel_rail.get();
     }
   }
   if (status != 0) {
@@ -186,7 +213,7 @@ Module3Problem* Library::module3(int ire, int icp, Access access, const char* ro
                     routine, status, ire, icp, category_name(access)));
     if (code != nullptr) *code = status;
   }
-  return problem;
+  return target;
 }
 
 Library& library() {

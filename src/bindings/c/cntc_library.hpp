@@ -6,6 +6,7 @@
 // problem has its own lock for calculate, so that different (ire, icp) solve concurrently.
 
 #include <array>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -14,8 +15,10 @@
 #include <string>
 
 #include "format/inp/case_record.hpp"
+#include "format/inp/wheelrail_record.hpp"
 #include "rollcontact/solution.hpp"
 #include "rollcontact/solve.hpp"
+#include "rollcontact/wheelrail.hpp"
 
 namespace rollcontact::cntc {
 
@@ -47,9 +50,35 @@ struct Module3Problem {
   Module3Problem();
 };
 
+/// The wheel/rail problem of a module-1 result element: the case as a WheelRailRecord built by
+/// the setters, the solver that keeps profiles and operators, the last solution.
+struct Module1Problem {
+  format::WheelRailRecord record;
+  Units units;
+  bool friction_given = false;
+  std::string rail_error, wheel_error;  ///< why a profile could not be read (empty: fine)
+  int cases = 0;
+  WheelsetSolver solver;
+  std::optional<WheelRailSolution> result;
+  double cpu_seconds = 0.0, wall_seconds = 0.0;
+  std::mutex busy;  ///< held by calculate
+  Module1Problem();
+};
+
 struct ResultElement {
   int module = 3;
-  std::array<std::unique_ptr<Module3Problem>, 10> problems;  ///< icp 1..9 (index 0 unused)
+  std::array<std::unique_ptr<Module3Problem>, 10> problems;  ///< module 3: icp 1..9
+  std::unique_ptr<Module1Problem> wheel_rail;                ///< module 1
+};
+
+/// What a routine works on after the access check: a module-3 problem, or a module-1 problem
+/// with icp = −1 (the whole case) or a patch number.
+struct Target {
+  Module3Problem* m3 = nullptr;
+  Module1Problem* m1 = nullptr;
+  int icp = 0;
+  explicit operator bool() const { return m3 != nullptr || m1 != nullptr; }
+  const Units& units() const { return m3 != nullptr ? m3->units : m1->units; }
 };
 
 /// Access categories of the routines (§1.3 table).
@@ -77,13 +106,15 @@ class Library {
   void finalize(int ire);
   void finalize_last();
 
-  /// The module-3 problem (ire, icp) for a routine of category `access`, created if new;
-  /// nullptr and a logged message (code in *code when given) when the access is refused.
-  Module3Problem* module3(int ire, int icp, Access access, const char* routine,
-                          int* code = nullptr);
+  /// The problem (ire, icp) for a routine of category `access`, its element created if new;
+  /// an empty Target and a logged message (code in *code when given) when the access is refused.
+  Target open(int ire, int icp, Access access, const char* routine, int* code = nullptr);
 
   /// Appends a line to the log (the .out file; also stdout when asked for).
   void log(const std::string& line);
+
+  /// The effective working folder (relative profile names are resolved against it).
+  std::filesystem::path working_folder();
 
   int debug_level() const { return debug_level_; }
   void set_debug_level(int level) { debug_level_ = level; }
@@ -96,6 +127,7 @@ class Library {
   bool initialised_ = false;
   bool to_screen_ = false;
   std::ofstream out_;
+  std::filesystem::path work_;
   std::map<int, std::unique_ptr<ResultElement>> elements_;
   int debug_level_ = 0;
 };

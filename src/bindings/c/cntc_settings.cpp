@@ -15,12 +15,30 @@
 namespace rollcontact::cntc {
 namespace {
 
-Module3Problem* problem(const int* ire, const int* icp, Access access, const char* routine) {
+Target open_target(const int* ire, const int* icp, Access access, const char* routine) {
   if (ire == nullptr || icp == nullptr) {
     library().log(fmt::format("{}: null handle argument (refused)", routine));
-    return nullptr;
+    return {};
   }
-  return library().module3(*ire, *icp, access, routine);
+  return library().open(*ire, *icp, access, routine);
+}
+
+/// The parts of a case both modules have, with the problem's units.
+struct Common {
+  format::ControlDigits& digits;
+  format::SolverSettings& solver;
+  format::Friction& friction;
+  format::Materials& materials;
+  Units& units;
+};
+
+Common common(const Target& t) {
+  if (t.m3 != nullptr) {
+    auto& r = t.m3->record;
+    return {r.digits, r.solver, r.friction, r.materials, t.m3->units};
+  }
+  auto& r = t.m1->record;
+  return {r.digits, r.solver, r.friction, r.materials, t.m1->units};
 }
 
 void reject(const char* routine, const std::string& why) {
@@ -31,16 +49,41 @@ int clamp(int v, int lo, int hi) {
   return std::clamp(v, lo, hi);
 }
 
-/// One flag of cntc_setflags for a module-3 problem.
-void set_flag(Module3Problem& p, int code, int value) {
-  format::ControlDigits& d = p.record.digits;
+/// The module-1 flags (C1, F1, D, NPOT_MAX); false for any other code.
+bool set_wheelrail_flag(Module1Problem& p, int code, int value) {
+  switch (code) {
+    case CNTC_ic_config:
+      p.record.config = clamp(value, 0, 5);
+      return true;
+    case CNTC_ic_force:
+      p.record.digits.f = clamp(value, 0, 3);
+      return true;
+    case CNTC_ic_discns:
+      if (value >= 2 && value <= 9) p.record.discretisation.method = value;
+      if (value >= 0 && value <= 9) p.record.digits.d = value;
+      return true;
+    case CNTC_ic_npomax:
+      if (value < 100 || value > 1000000)
+        library().log(fmt::format("cntc_setflags: NPOT_MAX = {} clamped to [100, 1e6]", value));
+      p.record.npot_max = clamp(value, 100, 1000000);
+      return true;
+    default:
+      return false;
+  }
+}
+
+/// One flag of cntc_setflags.
+void set_flag(const Target& t, int code, int value) {
+  if (t.m1 != nullptr && set_wheelrail_flag(*t.m1, code, value)) return;
+  Common c = common(t);
+  format::ControlDigits& d = c.digits;
   switch (code) {
     case 0:
       return;
     case CNTC_if_units: {
       Units u;
       if (units_for_code(value, u))
-        p.units = u;
+        c.units = u;
       else
         library().log(fmt::format("cntc_setflags: unit convention {} unknown (kept)", value));
       return;
@@ -61,7 +104,7 @@ void set_flag(Module3Problem& p, int code, int value) {
       d.f = clamp(value, 0, 2);
       return;
     case CNTC_ic_inflcf:
-      if (value >= 2 && value <= 4) p.record.materials.influence_type = value;
+      if (value >= 2 && value <= 4) c.materials.influence_type = value;
       return;
     case CNTC_ic_exrhs:
       d.e = clamp(value, 0, 3);
@@ -82,11 +125,13 @@ void set_flag(Module3Problem& p, int code, int value) {
       d.r = clamp(value, 0, 3);
       return;
     case CNTC_if_ncase:
-      p.cases = std::max(0, value - 1);
+      (t.m3 != nullptr ? t.m3->cases : t.m1->cases) = std::max(0, value - 1);
       return;
     case CNTC_if_idebug:
       library().set_debug_level(value);
       return;
+    case CNTC_ic_config:  // module 1 only
+    case CNTC_ic_npomax:
     case CNTC_ic_discns:  // module 3 grids come from setpotcontact/sethertzcontact
     case CNTC_ic_mater:   // M is set by setmaterialparameters
     case CNTC_ic_sens:
@@ -106,11 +151,16 @@ void set_flag(Module3Problem& p, int code, int value) {
 }
 
 /// The value of one flag for cntc_getflags; false for an unknown code.
-bool get_flag(const Module3Problem& p, int code, int& value) {
-  const format::ControlDigits& d = p.record.digits;
+bool get_flag(const Target& t, int code, int& value) {
+  const Common c = common(t);
+  const format::ControlDigits& d = c.digits;
+  if (t.m1 != nullptr) {
+    if (code == CNTC_ic_config) return value = t.m1->record.config, true;
+    if (code == CNTC_ic_npomax) return value = t.m1->record.npot_max, true;
+  }
   switch (code) {
     case CNTC_if_units:
-      value = p.units.code;
+      value = c.units.code;
       return true;
     case CNTC_ic_pvtime:
       value = d.p;
@@ -128,13 +178,13 @@ bool get_flag(const Module3Problem& p, int code, int& value) {
       value = d.f;
       return true;
     case CNTC_ic_frclaw:
-      value = p.record.friction.law;
+      value = c.friction.law;
       return true;
     case CNTC_ic_discns:
       value = d.d;
       return true;
     case CNTC_ic_inflcf:
-      value = p.record.materials.influence_type;
+      value = c.materials.influence_type;
       return true;
     case CNTC_ic_mater:
       value = d.m;
@@ -161,7 +211,7 @@ bool get_flag(const Module3Problem& p, int code, int& value) {
       value = d.e;
       return true;
     case CNTC_if_ncase:
-      value = p.cases;
+      value = t.m3 != nullptr ? t.m3->cases : t.m1->cases;
       return true;
     default:
       return false;
@@ -174,28 +224,93 @@ double difference_parameter(const format::Materials& m) {
   return 0.25 * g * ((1.0 - 2.0 * m.poiss1) / m.gg1 - (1.0 - 2.0 * m.poiss2) / m.gg2);
 }
 
+/// Parameters per friction law L = 0..6 (setfrictionmethod's `lparam`).
+constexpr int kFrictionParameters[] = {2, 0, 7, 7, 7, 3, 6};
+
+/// The friction law L (≠ 1) from its CONTACT parameters `lp` in the units `u`, clamped as
+/// CONTACT clamps them; Polach (L = 5) becomes the exponential law L = 4.
+format::Friction friction_of(int law, const double* lp, const Units& u) {
+  format::Friction f;
+  switch (law) {
+    case 0: {  // the smaller of FSTAT, FKIN for both
+      f.law = 0;
+      f.fstat = f.fkin = std::max(1e-6, std::min(lp[0], lp[1]));
+      break;
+    }
+    case 2:
+    case 3:
+    case 4:
+      f.law = law;
+      f.fkin = std::max(1e-6, lp[0]);
+      f.params = {std::max(0.0, lp[1]), std::max(1e-4, lp[2] * u.velocity), std::max(0.0, lp[3]),
+                  std::max(1e-4, lp[4] * u.velocity)};
+      f.memdst = std::max(0.0, lp[5] * u.length);
+      f.mem_s0 = std::max(0.0, lp[6] * u.velocity);
+      f.fstat = f.fkin + f.params[0] + f.params[2];
+      break;
+    case 5: {  // Polach: fkin = a·fstat, fexp1 = fstat − fkin, sabsh1 = ln 2 / b
+      const double fstat = lp[0], a = lp[1], b = lp[2] / u.velocity;
+      f.law = 4;
+      f.fkin = std::max(1e-6, a * fstat);
+      f.params = {fstat - f.fkin, std::log(2.0) / b, 0.0, 10000.0};
+      f.memdst = 0.001;
+      f.mem_s0 = 10.0;
+      f.fstat = fstat;
+      break;
+    }
+    default:  // 6: temperature dependent
+      f.law = 6;
+      f.fkin = f.fstat = std::max(1e-6, lp[0]);
+      f.params = {lp[1], std::max(1e-6 - f.fkin, lp[2]), lp[3], 0.0};
+      f.memdst = std::max(0.0, lp[4] * u.length);
+      f.mem_s0 = std::max(0.0, lp[5] * u.velocity);
+  }
+  return f;
+}
+
+/// cntc_setpotcontact in module 1: [dx, ds, n.a.] (ipotcn 0) or [dx, ds, a_sep [A], d_sep,
+/// d_comb, {d_turn, g_miss}] (ipotcn −1), lengths [L].
+void set_wheelrail_discretisation(Module1Problem& p, int ipotcn, int nparam, const double* r) {
+  constexpr const char* name = "cntc_setpotcontact";
+  const bool short_form = ipotcn == 0 && nparam == 3;
+  const bool long_form = ipotcn == -1 && nparam >= 5 && nparam <= 7;
+  if (!short_form && !long_form)
+    return reject(name, fmt::format("module 1 takes ipotcn = 0 with 3 parameters or -1 with 5 to "
+                                    "7, not ipotcn = {} with {}",
+                                    ipotcn, nparam));
+  if (r == nullptr) return reject(name, "null array");
+  format::WheelRailDiscretisation& d = p.record.discretisation;
+  const double len = p.units.length;
+  d.dx = std::max(1e-12, r[0] * len);
+  d.ds = std::max(1e-12, r[1] * len);
+  if (short_form) return;
+  d.a_sep = std::max(0.0, r[2]);
+  d.d_sep = std::max(0.0, r[3] * len);
+  d.d_comb = std::max(0.0, r[4] * len);
+  d.d_turn = nparam >= 6 ? std::max(0.0, r[5] * len) : 2.0 * d.d_sep - d.d_comb;
+  d.g_miss = nparam >= 7 ? r[6] * len : -1.0;
+}
+
 }  // namespace
 }  // namespace rollcontact::cntc
 
 using namespace rollcontact::cntc;
 
 CNTC_EXPORT void cntc_setflags(int* ire, int* icp, int* lenflg, int* params, int* values) {
-  Module3Problem* p = problem(ire, icp, Access::Settings, "cntc_setflags");
-  if (p == nullptr) return;
+  const Target t = open_target(ire, icp, Access::Settings, "cntc_setflags");
+  if (!t) return;
   if (lenflg == nullptr || (*lenflg > 0 && (params == nullptr || values == nullptr)))
     return reject("cntc_setflags", "null array");
-  for (int i = 0; i < *lenflg; ++i) set_flag(*p, params[i], values[i]);
+  for (int i = 0; i < *lenflg; ++i) set_flag(t, params[i], values[i]);
 }
 
 CNTC_EXPORT void cntc_getflags(int* ire, int* icp, int* nparam, int* iparam, int* values) {
-  Module3Problem* p = problem(ire, icp, Access::Either, "cntc_getflags");
-  if (p == nullptr || nparam == nullptr ||
-      (*nparam > 0 && (iparam == nullptr || values == nullptr)))
-    return;
+  const Target t = open_target(ire, icp, Access::Either, "cntc_getflags");
+  if (!t || nparam == nullptr || (*nparam > 0 && (iparam == nullptr || values == nullptr))) return;
   for (int i = 0; i < *nparam; ++i) {
     if (iparam[i] == 0) continue;
     int v = 0;
-    if (get_flag(*p, iparam[i], v))
+    if (get_flag(t, iparam[i], v))
       values[i] = v;
     else
       library().log(fmt::format("cntc_getflags: unknown parameter code {}", iparam[i]));
@@ -205,8 +320,8 @@ CNTC_EXPORT void cntc_getflags(int* ire, int* icp, int* nparam, int* iparam, int
 CNTC_EXPORT void cntc_setsolverflags(int* ire, int* icp, int* gdigit, int* nints, int* iparam,
                                      int* nreals, double* rparam) {
   constexpr const char* name = "cntc_setsolverflags";
-  Module3Problem* p = problem(ire, icp, Access::Settings, name);
-  if (p == nullptr) return;
+  const Target t = open_target(ire, icp, Access::Settings, name);
+  if (!t) return;
   if (gdigit == nullptr || nints == nullptr || nreals == nullptr)
     return reject(name, "null argument");
   const int g = *gdigit;
@@ -217,8 +332,9 @@ CNTC_EXPORT void cntc_setsolverflags(int* ire, int* icp, int* gdigit, int* nints
   if ((ni[g] > 0 && iparam == nullptr) || (nr[g] > 0 && rparam == nullptr))
     return reject(name, "null array");
   if (g == 1 || g == 6) return;  // keep; sensitivity settings (not computed here)
-  rollcontact::format::SolverSettings& s = p->record.solver;
-  p->record.digits.g = g;
+  const Common c = common(t);
+  rollcontact::format::SolverSettings& s = c.solver;
+  c.digits.g = g;
   s.method = g;
   s.maxgs = std::max(1, iparam[0]);
   s.maxin = std::max(1, iparam[1]);
@@ -239,24 +355,25 @@ CNTC_EXPORT void cntc_setsolverflags(int* ire, int* icp, int* gdigit, int* nints
 CNTC_EXPORT void cntc_setmaterialparameters(int* ire, int* icp, int* mdigit, int* nparam,
                                             double* rparam) {
   constexpr const char* name = "cntc_setmaterialparameters";
-  Module3Problem* p = problem(ire, icp, Access::Settings, name);
-  if (p == nullptr) return;
+  const Target t = open_target(ire, icp, Access::Settings, name);
+  if (!t) return;
   if (mdigit == nullptr || nparam == nullptr) return reject(name, "null argument");
+  const Common c = common(t);
   const int m = *mdigit;
   static constexpr int needed[] = {4, 8, 8, 7, 8, 7, 4, 4};
   if (m >= 10 && m <= 12) {
     // Damping digit M2: only "no damping" and "keep" without parameters here.
     if (m == 12) return reject(name, "damping M2 = 2 not supported yet");
     if (*nparam > 1) return reject(name, fmt::format("M2 = {} takes 0 or 1 parameters", m - 10));
-    p->record.digits.m2 = m - 10;
+    c.digits.m2 = m - 10;
     return;
   }
   if (m < 0 || m > 7) return reject(name, fmt::format("M = {} outside 0..7 and 10..12", m));
   if (*nparam != needed[m])
     return reject(name, fmt::format("M = {} needs nparam = {}", m, needed[m]));
   if (rparam == nullptr) return reject(name, "null array");
-  rollcontact::format::Materials& mat = p->record.materials;
-  const Units& u = p->units;
+  rollcontact::format::Materials& mat = c.materials;
+  const Units& u = c.units;
   mat.poiss1 = rparam[0];
   mat.poiss2 = rparam[1];
   mat.gg1 = rparam[2] * u.pressure();
@@ -264,93 +381,83 @@ CNTC_EXPORT void cntc_setmaterialparameters(int* ire, int* icp, int* mdigit, int
   mat.model_params = {};
   for (int k = 4; k < *nparam; ++k) mat.model_params[static_cast<std::size_t>(k - 4)] = rparam[k];
   if (m == 2) mat.model_params[0] *= u.length * u.length * u.length;  // flx [L³/F]
-  p->record.digits.m = m;
+  c.digits.m = m;
   // MAXOUT follows the coupling of the bodies (§2.2).
   const double ak = std::abs(difference_parameter(mat));
-  int& maxout = p->record.solver.maxout;
+  int& maxout = c.solver.maxout;
   if (ak < 1e-4 && maxout >= 2) maxout = 1;
   if (ak >= 1e-4 && maxout <= 1) maxout = 10;
 }
 
 CNTC_EXPORT void cntc_settimestep(int* ire, int* icp, double* dt) {
-  Module3Problem* p = problem(ire, icp, Access::Settings, "cntc_settimestep");
-  if (p == nullptr || dt == nullptr) return;
+  const Target t = open_target(ire, icp, Access::Settings, "cntc_settimestep");
+  if (!t || dt == nullptr) return;
   // dt only scales the frictional power of shifts (T = 0, 1), which rollcontact reports per
   // step (outputs.md §4); kept for the interface.
 }
 
 CNTC_EXPORT void cntc_setrollingstepsize(int* ire, int* icp, double* chi, double* dq) {
-  Module3Problem* p = problem(ire, icp, Access::Settings, "cntc_setrollingstepsize");
-  if (p == nullptr || chi == nullptr || dq == nullptr) return;
-  p->record.kinematics.chi = *chi;
-  p->record.kinematics.dq = *dq * p->units.length;
+  const Target t = open_target(ire, icp, Access::Settings, "cntc_setrollingstepsize");
+  if (!t || chi == nullptr || dq == nullptr) return;
+  if (t.m1 != nullptr) {  // module 1: the step relative to DX, no unit; chi is not used
+    t.m1->record.discretisation.dqrel = *dq;
+    return;
+  }
+  t.m3->record.kinematics.chi = *chi;
+  t.m3->record.kinematics.dq = *dq * t.m3->units.length;
 }
 
 CNTC_EXPORT void cntc_setfrictionmethod(int* ire, int* icp, int* imeth, int* nparam,
                                         double* params) {
   constexpr const char* name = "cntc_setfrictionmethod";
-  Module3Problem* p = problem(ire, icp, Access::Settings, name);
-  if (p == nullptr) return;
+  const Target t = open_target(ire, icp, Access::Settings, name);
+  if (!t) return;
   if (imeth == nullptr || nparam == nullptr) return reject(name, "null argument");
   const int v = *imeth / 10, law = *imeth % 10;
-  if (*imeth < 0 || v != 0)
+  if (*imeth < 0 || v > 2) return reject(name, fmt::format("imeth = {} is not 10*V + L", *imeth));
+  if (v != 0 && t.m3 != nullptr)
     return reject(name, fmt::format("imeth = {}: module 3 takes V = 0 only", *imeth));
-  static constexpr int needed[] = {2, 0, 7, 7, 7, 3, 6};
   if (law > 6) return reject(name, fmt::format("L = {} outside 0..6", law));
-  if (*nparam != needed[law])
-    return reject(name, fmt::format("L = {} needs nparam = {}", law, needed[law]));
-  if (needed[law] > 0 && params == nullptr) return reject(name, "null array");
-  rollcontact::format::Friction& f = p->record.friction;
-  const Units& u = p->units;
-  switch (law) {
-    case 0: {  // the smaller of FSTAT, FKIN for both
-      const double mu = std::max(1e-6, std::min(params[0], params[1]));
-      f = {};
-      f.law = 0;
-      f.fstat = f.fkin = mu;
-      break;
+  if (law == 1) return;  // keep (V is forced to 0)
+  const int n = kFrictionParameters[law];
+  if (v == 0 && *nparam != n) return reject(name, fmt::format("L = {} needs nparam = {}", law, n));
+  if (*nparam > 0 && params == nullptr) return reject(name, "null array");
+  const Common c = common(t);
+  if (v == 0) {
+    c.friction = friction_of(law, params, c.units);
+    c.digits.l = c.friction.law;
+    if (t.m1 != nullptr) {
+      t.m1->record.variable_friction = {};
+      t.m1->friction_given = true;
     }
-    case 1:
-      return;  // keep
-    case 2:
-    case 3:
-    case 4:
-      f = {};
-      f.law = law;
-      f.fkin = std::max(1e-6, params[0]);
-      f.params = {std::max(0.0, params[1]), std::max(1e-4, params[2] * u.velocity),
-                  std::max(0.0, params[3]), std::max(1e-4, params[4] * u.velocity)};
-      f.memdst = std::max(0.0, params[5] * u.length);
-      f.mem_s0 = std::max(0.0, params[6] * u.velocity);
-      f.fstat = f.fkin + f.params[0] + f.params[2];
-      break;
-    case 5: {  // Polach, stored as the exponential law L = 4
-      const double fstat = params[0], a = params[1], b = params[2] / u.velocity;
-      f = {};
-      f.law = 4;
-      f.fkin = std::max(1e-6, a * fstat);
-      f.params = {fstat - f.fkin, std::log(2.0) / b, 0.0, 10000.0};
-      f.memdst = 0.001;
-      f.mem_s0 = 10.0;
-      f.fstat = fstat;
-      break;
-    }
-    default:
-      f = {};
-      f.law = 6;
-      f.fkin = f.fstat = std::max(1e-6, params[0]);
-      f.params = {params[1], std::max(1e-6 - f.fkin, params[2]), params[3], 0.0};
-      f.memdst = std::max(0.0, params[4] * u.length);
-      f.mem_s0 = std::max(0.0, params[5] * u.velocity);
+    return;
   }
-  p->record.digits.l = f.law;
+  // V = 1, 2 (module 1): [nvf, (alpha_i [A] or s_i [L], lparam_i) for i = 1..nvf].
+  const int nvf = static_cast<int>(std::lround(params[0]));
+  if (nvf < 1 || *nparam != 1 + nvf * (1 + n))
+    return reject(name, fmt::format("V = {}, L = {} with nvf = {} needs nparam = {}", v, law, nvf,
+                                    1 + std::max(nvf, 1) * (1 + n)));
+  rollcontact::format::VariableFriction vf;
+  vf.v = v;
+  for (int i = 0; i < nvf; ++i) {
+    const double* set = params + 1 + i * (1 + n);
+    vf.positions.push_back(v == 2 ? set[0] * c.units.length : set[0]);
+    const rollcontact::format::Friction f = friction_of(law, set + 1, c.units);
+    vf.sets.push_back({f.fstat, f.fkin, f.params});
+    if (i == 0) c.friction = f;
+  }
+  c.digits.l = c.friction.law;
+  t.m1->record.variable_friction = std::move(vf);
+  t.m1->friction_given = true;
 }
 
 CNTC_EXPORT void cntc_setpotcontact(int* ire, int* icp, int* ipotcn, int* nparam, double* rparam) {
   constexpr const char* name = "cntc_setpotcontact";
-  Module3Problem* p = problem(ire, icp, Access::Settings, name);
-  if (p == nullptr) return;
+  const Target t = open_target(ire, icp, Access::Settings, name);
+  if (!t) return;
   if (ipotcn == nullptr || nparam == nullptr) return reject(name, "null argument");
+  if (t.m1 != nullptr) return set_wheelrail_discretisation(*t.m1, *ipotcn, *nparam, rparam);
+  Module3Problem* p = t.m3;
   if (*ipotcn < 1 || *ipotcn > 4 || *nparam != 6)
     return reject(name, fmt::format("ipotcn = {}, nparam = {}: module 3 takes ipotcn 1..4 with "
                                     "6 parameters",
@@ -365,8 +472,13 @@ CNTC_EXPORT void cntc_setpotcontact(int* ire, int* icp, int* ipotcn, int* nparam
 }
 
 CNTC_EXPORT void cntc_settangentialforces(int* ire, int* icp, double* fx, double* fy) {
-  Module3Problem* p = problem(ire, icp, Access::Settings, "cntc_settangentialforces");
-  if (p == nullptr || fx == nullptr || fy == nullptr) return;
+  const Target t = open_target(ire, icp, Access::Settings, "cntc_settangentialforces");
+  if (!t || fx == nullptr || fy == nullptr) return;
+  if (t.m1 != nullptr) {  // module 1: the total longitudinal force [F] (F1 = 1); fy unused
+    t.m1->record.motion.fx = *fx;
+    return;
+  }
+  Module3Problem* p = t.m3;
   double x = *fx, y = *fy;
   const double length = std::hypot(x, y);
   if (length > 1.0) {
@@ -378,7 +490,7 @@ CNTC_EXPORT void cntc_settangentialforces(int* ire, int* icp, double* fx, double
 }
 
 CNTC_EXPORT void cntc_setreferencevelocity(int* ire, int* icp, double* veloc) {
-  Module3Problem* p = problem(ire, icp, Access::Module3, "cntc_setreferencevelocity");
+  Module3Problem* p = open_target(ire, icp, Access::Module3, "cntc_setreferencevelocity").m3;
   if (p == nullptr || veloc == nullptr) return;
   p->record.kinematics.veloc = std::max(1e-9, std::abs(*veloc) * p->units.velocity);
 }
@@ -386,7 +498,7 @@ CNTC_EXPORT void cntc_setreferencevelocity(int* ire, int* icp, double* veloc) {
 CNTC_EXPORT void cntc_sethertzcontact(int* ire, int* icp, int* ipotcn, int* nparam,
                                       double* rparam) {
   constexpr const char* name = "cntc_sethertzcontact";
-  Module3Problem* p = problem(ire, icp, Access::Module3, name);
+  Module3Problem* p = open_target(ire, icp, Access::Module3, name).m3;
   if (p == nullptr) return;
   if (ipotcn == nullptr || nparam == nullptr) return reject(name, "null argument");
   const int ip = *ipotcn;
@@ -420,14 +532,14 @@ CNTC_EXPORT void cntc_sethertzcontact(int* ire, int* icp, int* ipotcn, int* npar
 }
 
 CNTC_EXPORT void cntc_setpenetration(int* ire, int* icp, double* pen) {
-  Module3Problem* p = problem(ire, icp, Access::Module3, "cntc_setpenetration");
+  Module3Problem* p = open_target(ire, icp, Access::Module3, "cntc_setpenetration").m3;
   if (p == nullptr || pen == nullptr) return;
   p->record.digits.n = 0;
   p->record.kinematics.pen = *pen * p->units.length;
 }
 
 CNTC_EXPORT void cntc_setnormalforce(int* ire, int* icp, double* fn) {
-  Module3Problem* p = problem(ire, icp, Access::Module3, "cntc_setnormalforce");
+  Module3Problem* p = open_target(ire, icp, Access::Module3, "cntc_setnormalforce").m3;
   if (p == nullptr || fn == nullptr) return;
   p->record.digits.n = 1;
   p->record.kinematics.fn = *fn;
@@ -436,7 +548,7 @@ CNTC_EXPORT void cntc_setnormalforce(int* ire, int* icp, double* fn) {
 CNTC_EXPORT void cntc_setundeformeddistc(int* ire, int* icp, int* ibase, int* nparam,
                                          double* prmudf) {
   constexpr const char* name = "cntc_setundeformeddistc";
-  Module3Problem* p = problem(ire, icp, Access::Module3, name);
+  Module3Problem* p = open_target(ire, icp, Access::Module3, name).m3;
   if (p == nullptr) return;
   if (ibase == nullptr || nparam == nullptr || (*nparam > 0 && prmudf == nullptr))
     return reject(name, "null argument");
@@ -484,7 +596,7 @@ CNTC_EXPORT void cntc_setundeformeddistc(int* ire, int* icp, int* ibase, int* np
 }
 
 CNTC_EXPORT void cntc_setcreepages(int* ire, int* icp, double* vx, double* vy, double* phi) {
-  Module3Problem* p = problem(ire, icp, Access::Module3, "cntc_setcreepages");
+  Module3Problem* p = open_target(ire, icp, Access::Module3, "cntc_setcreepages").m3;
   if (p == nullptr || vx == nullptr || vy == nullptr || phi == nullptr) return;
   rollcontact::format::Kinematics& k = p->record.kinematics;
   const Units& u = p->units;
