@@ -115,6 +115,17 @@ void cntc_setrollingstepsize(int *ire, int *icp, double *chi, double *dq);
 void cntc_setfrictionmethod(int *ire, int *icp, int *imeth, int *nparam, double *params);
 void cntc_setpotcontact(int *ire, int *icp, int *ipotcn, int *nparam, double *rparam);
 void cntc_settangentialforces(int *ire, int *icp, double *fx, double *fy);
+void cntc_setmetadata(int *ire, int *icp, int *lenmta, int *params, double *values);
+void cntc_settemperaturedata(int *ire, int *icp, int *imeth, int *nparam, double *rparam);
+void cntc_readinpfile(int *ire, int *inp_type, const char *c_fname, int *len_fname, int *ierror);
+/* Older names some clients still bind: setmaterialproperties is setmaterialparameters with M = 0
+ * (g1, nu1, g2, nu2); settrackdimensions_new is settrackdimensions; settrackdimensions_old and
+ * setinterfaciallayer are refused with a log line. */
+void cntc_setmaterialproperties(int *ire, int *icp, double *g1, double *nu1, double *g2,
+                                double *nu2);
+void cntc_setinterfaciallayer(int *ire, int *icp, int *imeth, int *nparam, double *params);
+void cntc_settrackdimensions_new(int *ire, int *ztrack, int *nparam, double *rparam);
+void cntc_settrackdimensions_old(int *ire, int *ztrack, int *nparam, double *rparam);
 
 /* 2.3 Module 3 only */
 void cntc_setreferencevelocity(int *ire, int *icp, double *veloc);
@@ -123,6 +134,7 @@ void cntc_setpenetration(int *ire, int *icp, double *pen);
 void cntc_setnormalforce(int *ire, int *icp, double *fn);
 void cntc_setundeformeddistc(int *ire, int *icp, int *ibase, int *nparam, double *prmudf);
 void cntc_setcreepages(int *ire, int *icp, double *vx, double *vy, double *phi);
+void cntc_setextrarigidslip(int *ire, int *icp, int *lenarr, double *wx, double *wy);
 void cntc_gethertzcontact(int *ire, int *icp, int *lenarr, double *values);
 
 /* 2.4 Module 1 only: track, wheelset, vertical force */
@@ -140,6 +152,18 @@ void cntc_setprofileinputfname(int *ire, const char *c_fname, int *len_fname, in
                                int *iparam, int *nreals, double *rparam);
 void cntc_setprofileinputvalues(int *ire, int *npoint, double *values, int *nints, int *iparam,
                                 int *nreals, double *rparam);
+void cntc_getprofilevalues(int *ire, int *itask, int *nints, int *iparam, int *nreals,
+                           double *rparam, int *lenarr, double *values);
+void cntc_getprofilevalues_new(int *ire, int *itask, int *nints, int *iparam, int *nreals,
+                               double *rparam, int *lenarr, double *values);
+
+/* 2.6 Subsurface stresses */
+void subs_addblock(int *ire, int *icp, int *iblk, int *isubs, int *nx, int *ny, int *nz,
+                   double *xparam, double *yparam, double *zparam);
+void subs_calculate(int *ire, int *icp, int *ierror);
+void subs_getblocksize(int *ire, int *icp, int *iblk, int *nx, int *ny, int *nz);
+void subs_getresults(int *ire, int *icp, int *iblk, int *lenarr, int *ncol, int *icol,
+                     double *values);
 
 /* 2.7 Solving */
 void cntc_calculate(int *ire, int *icp, int *ierror);
@@ -163,10 +187,13 @@ void cntc_getcontactpatchareas(int *ire, int *icp, double *carea, double *harea,
 void cntc_getelementdivision(int *ire, int *icp, int *lenarr, int *eldiv);
 void cntc_getmaximumpressure(int *ire, int *icp, double *pnmax);
 void cntc_getmaximumtraction(int *ire, int *icp, double *ptmax);
+void cntc_getmaximumtemperature(int *ire, int *icp, double *t1max, double *t2max);
 void cntc_getfielddata(int *ire, int *icp, int *ifld, int *lenarr, double *fld);
 void cntc_gettractions(int *ire, int *icp, int *lenarr, double *pn, double *px, double *py);
 void cntc_getmicroslip(int *ire, int *icp, int *lenarr, double *sx, double *sy);
 void cntc_getdisplacements(int *ire, int *icp, int *lenarr, double *un, double *ux, double *uy);
+void cntc_getsensitivities(int *ire, int *icp, int *lenout, int *lenin, double *sens);
+void cntc_getparameters(int *ire, int *icp, int *itask, int *lenarr, double *values);
 void cntc_getcalculationtime(int *ire, int *icp, double *tcpu, double *twall);
 void cntc_resetcalculationtime(int *ire, int *icp);
 

@@ -13,6 +13,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "format/inp/case_record.hpp"
 #include "format/inp/wheelrail_record.hpp"
@@ -45,6 +46,9 @@ struct Module3Problem {
   int cases = 0;                ///< calculations done
   PatchSolver solver;
   std::optional<Solution> result;
+  std::vector<model::SubsurfaceBlock> subs_blocks;  ///< subs_addblock
+  std::vector<SubsurfaceResult> subs_results;       ///< subs_calculate, one per block
+  std::array<double, 9> metadata{};                 ///< setmetadata (recorded only)
   double cpu_seconds = 0.0, wall_seconds = 0.0;
   std::mutex busy;  ///< held by calculate
   Module3Problem();
@@ -60,6 +64,10 @@ struct Module1Problem {
   int cases = 0;
   WheelsetSolver solver;
   std::optional<WheelRailSolution> result;
+  std::vector<model::SubsurfaceBlock> subs_blocks;  ///< subs_addblock (all patches)
+  /// subs_calculate: per patch (index icp − 1), one result per block.
+  std::vector<std::vector<SubsurfaceResult>> subs_results;
+  std::array<double, 9> metadata{};
   double cpu_seconds = 0.0, wall_seconds = 0.0;
   std::mutex busy;  ///< held by calculate
   Module1Problem();

@@ -23,6 +23,8 @@ struct PatchView {
   bool shift = false;                     ///< T = 1: shifts [mm, mm, rad] instead of creepages
   double xi = 0.0, eta = 0.0, phi = 0.0;  ///< creepages [-, -, rad/mm] or shifts
   double veloc = 0.0;                     ///< [mm/s]
+  double chi = 0.0, dq = 1.0;             ///< rolling direction [rad], step [mm] in effect
+  Target target;                          ///< the problem, for its settings
 };
 
 std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* routine) {
@@ -34,6 +36,7 @@ std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* ro
   if (!t) return std::nullopt;
   PatchView v;
   v.units = t.units();
+  v.target = t;
   if (t.m3 != nullptr) {
     if (!t.m3->result) {
       library().log(fmt::format("{}: no results yet for ire = {}, icp = {}", routine, *ire, *icp));
@@ -46,6 +49,8 @@ std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* ro
     v.eta = v.shift ? s.totals.shift_y : s.totals.creep_y;
     v.phi = v.shift ? t.m3->record.kinematics.cphi : s.totals.spin;
     v.veloc = t.m3->record.kinematics.veloc;
+    v.chi = s.kinematics.chi;
+    v.dq = s.kinematics.dq;
     return v;
   }
   const auto& result = t.m1->result;
@@ -62,6 +67,8 @@ std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* ro
   v.eta = w.eta;
   v.phi = w.phi_per_mm;
   v.veloc = w.veloc_mm_s;
+  v.chi = w.chi_rad;
+  v.dq = w.dq_mm;
   return v;
 }
 
@@ -263,4 +270,98 @@ CNTC_EXPORT void cntc_resetcalculationtime(int* ire, int* icp) {
   const Target t = library().open(*ire, *icp, Access::Results, "cntc_resetcalculationtime");
   if (t.m3 != nullptr) t.m3->cpu_seconds = t.m3->wall_seconds = 0.0;
   if (t.m1 != nullptr) t.m1->cpu_seconds = t.m1->wall_seconds = 0.0;
+}
+
+CNTC_EXPORT void cntc_getmaximumtemperature(int* ire, int* icp, double* t1max, double* t2max) {
+  const auto v = patch_of(ire, icp, "cntc_getmaximumtemperature");
+  if (!v || t1max == nullptr || t2max == nullptr) return;
+  // Temperatures are not computed yet (H >= 1 is refused by calculate): H = 0 gives 0 and 0.
+  *t1max = 0.0;
+  *t2max = 0.0;
+}
+
+CNTC_EXPORT void cntc_getsensitivities(int* ire, int* icp, int* lenout, int* lenin, double* sens) {
+  const auto v = patch_of(ire, icp, "cntc_getsensitivities");
+  if (!v || lenout == nullptr || lenin == nullptr || sens == nullptr) return;
+  // sens(lenout, lenin) column-major; outputs fn, fx, fy, mz; inputs pen, ξ, η, φ. What the
+  // solver computed (the normal stiffness, the creep-force derivatives of the force
+  // iteration); zeros elsewhere (not computed).
+  const Sensitivities& d = v->s->sensitivities;
+  const double len = v->units.length, y = v->left;
+  double all[4][4] = {};
+  all[0][0] = d.dfn_dpen * len;  // [F/L]
+  all[1][1] = d.dfx_dksi;
+  all[1][2] = y * d.dfx_deta;
+  all[2][1] = y * d.dfy_dksi;
+  all[2][2] = d.dfy_deta;
+  for (int j = 0; j < *lenin; ++j)
+    for (int i = 0; i < *lenout; ++i) sens[i + j * *lenout] = i < 4 && j < 4 ? all[i][j] : 0.0;
+}
+
+CNTC_EXPORT void cntc_getparameters(int* ire, int* icp, int* itask, int* lenarr, double* values) {
+  const auto v = patch_of(ire, icp, "cntc_getparameters");
+  if (!v || itask == nullptr || lenarr == nullptr || values == nullptr) return;
+  const Target& t = v->target;
+  const format::Materials& m = t.m3 != nullptr ? t.m3->record.materials : t.m1->record.materials;
+  const format::Friction& f = t.m3 != nullptr ? t.m3->record.friction : t.m1->record.friction;
+  const int mdigit = t.m3 != nullptr ? t.m3->record.digits.m : t.m1->record.digits.m;
+  const double len = v->units.length, pressure = v->units.pressure();
+  const double tau_c0 = mdigit == 4 ? m.model_params[2] : 0.0;
+  std::vector<double> out;
+  if (*itask == 1) {
+    const auto& k = t.m3 != nullptr ? t.m3->record.kinematics : format::Kinematics{};
+    out = {v->veloc / v->units.velocity,
+           v->chi,
+           v->dq / len,
+           k.spinxo / len,
+           k.spinyo / len,
+           tau_c0 / pressure};
+  } else if (*itask == 2) {
+    const CombinedMaterial& c = v->s->material;
+    const SimplifiedReport& sr = v->s->simplified;
+    const double flx = 1.0 / (len * len * len);  // [L³/F]
+    const auto& mp = m.model_params;
+    const bool one_flx = mdigit == 2, fastsim = mdigit == 2 || mdigit == 3 || mdigit == 5;
+    const double k0 = fastsim ? mp[one_flx ? 1 : 0] : 0.0;
+    const double alfa = fastsim ? mp[one_flx ? 2 : 1] : 0.0;
+    const double beta = fastsim ? mp[one_flx ? 3 : 2] : 0.0;
+    const bool layer = mdigit == 4;
+    out = {m.gg1 / pressure,
+           m.gg2 / pressure,
+           c.g / pressure,
+           m.poiss1,
+           m.poiss2,
+           c.nu,
+           c.k,
+           sr.flx1 * flx,
+           sr.flx2 * flx,
+           sr.flx3 * flx,
+           k0,
+           alfa,
+           beta,
+           sr.k_eff,
+           layer ? mp[0] / pressure : 0.0,
+           layer ? mp[1] / len : 0.0,
+           tau_c0 / pressure,
+           layer ? mp[3] : 0.0,
+           0.0,
+           0.0,
+           0.0,
+           0.0};
+  } else if (*itask == 3) {
+    const format::VariableFriction* vf = t.m1 != nullptr && t.m1->record.variable_friction.v != 0
+                                             ? &t.m1->record.variable_friction
+                                             : nullptr;
+    const std::size_t nvf = vf != nullptr ? vf->sets.size() : 1;
+    out = {double(f.law), double(nvf), f.memdst, f.mem_s0};
+    for (std::size_t i = 0; i < nvf; ++i) {
+      out.push_back(vf != nullptr ? vf->positions[i] : 0.0);
+      out.push_back(vf != nullptr ? vf->sets[i].fstat : f.fstat);
+      out.push_back(vf != nullptr ? vf->sets[i].fkin : f.fkin);
+    }
+  } else {
+    return;  // any other task writes nothing (§2.9)
+  }
+  for (int k = 0; k < std::min(*lenarr, static_cast<int>(out.size())); ++k)
+    values[k] = out[static_cast<std::size_t>(k)];
 }

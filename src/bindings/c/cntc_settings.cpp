@@ -208,7 +208,7 @@ bool get_flag(const Target& t, int code, int& value) {
       value = d.r;
       return true;
     case CNTC_ic_exrhs:
-      value = d.e;
+      value = d.e == 9 ? 1 : d.e;  // per-element values: CONTACT's E = 1
       return true;
     case CNTC_if_ncase:
       value = t.m3 != nullptr ? t.m3->cases : t.m1->cases;

@@ -15,7 +15,9 @@ namespace {
   throw NotSupportedError("not supported yet: module 1 " + what);
 }
 
-model::WheelRailProfile profile_of(const ProfileSpec& s) {
+}  // namespace
+
+model::WheelRailProfile to_wheelrail_profile(const ProfileSpec& s) {
   model::WheelRailProfile p;
   p.points = s.profile;
   p.smoothing.method = s.ismooth;
@@ -27,6 +29,8 @@ model::WheelRailProfile profile_of(const ProfileSpec& s) {
   p.smoothing.max_omitted_fraction = s.maxomit;
   return p;
 }
+
+namespace {
 
 /// The settings every patch shares, through the module-3 adapter: a case record with the
 /// module-1 meanings of N, E, Z taken out (each patch is posed with its approach).
@@ -88,8 +92,8 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   model::WheelRailProblem p;
   p.side = r.is_left() ? model::WheelSide::Left : model::WheelSide::Right;
   p.patch = patch_template(r);
-  p.rail = profile_of(r.rail);
-  p.wheel = profile_of(r.wheel);
+  p.rail = to_wheelrail_profile(r.rail);
+  p.wheel = to_wheelrail_profile(r.wheel);
   const TrackDimensions& tr = r.track;
   p.track = {tr.gaught, tr.gaugwd, tr.raily0, tr.railz0, tr.cant, tr.curv};
   const RailDeviations& rd = r.rail_deviations;

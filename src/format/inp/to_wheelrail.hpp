@@ -15,6 +15,9 @@ void check_supported(const WheelRailRecord& record);
 /// the parts of a run that speak of cases in general (progress, errors, shared report blocks).
 CaseRecord identity_record(const WheelRailRecord& record);
 
+/// A profile line's points and smoothing options as the wheel/rail model takes them.
+model::WheelRailProfile to_wheelrail_profile(const ProfileSpec& spec);
+
 /// The physics of `record`. Calls check_supported() first.
 model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& record);
 

@@ -1,0 +1,115 @@
+// cntc_getprofilevalues (spec library-api.md §2.5): a rail or wheel profile of a module-1
+// element sampled on the smooth curve the contact search uses (wheelrail::ProfileCurve).
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "bindings/c/cntc_export.hpp"
+#include "bindings/c/cntc_library.hpp"
+#include "format/inp/to_wheelrail.hpp"
+#include "rollcontact/errors.hpp"
+#include "wheelrail/profile_curve.hpp"
+
+namespace rollcontact::cntc {
+namespace {
+
+struct Samples {
+  std::vector<double> y, z, s, angle;
+};
+
+/// The curve sampled as isampl asks: −1 the input points, 0 the spline nodes, 1 every ds_out mm
+/// of arc length, 2..100 that many points per spline interval.
+Samples sample(const wheelrail::ProfileCurve& c, const Profile& points, int isampl, double ds_out) {
+  Samples out;
+  std::vector<double> at;
+  const auto& s = c.node_s();
+  if (isampl == 1 && ds_out >= 1e-4) {
+    const int n = static_cast<int>(std::floor(c.length() / ds_out + 1e-9));
+    for (int k = 0; k <= n; ++k) at.push_back(k * ds_out);
+  } else if (isampl >= 2 && isampl <= 100) {
+    for (std::size_t k = 0; k + 1 < s.size(); ++k)
+      for (int j = 0; j < isampl; ++j) at.push_back(s[k] + (s[k + 1] - s[k]) * j / isampl);
+    if (!s.empty()) at.push_back(s.back());
+  } else if (isampl != -1) {
+    at = s;
+  }
+  const double direction =
+      c.node_y().size() >= 2 && c.node_y().back() < c.node_y().front() ? -1.0 : 1.0;
+  auto add = [&](const wheelrail::CurvePoint& p) {
+    out.y.push_back(p.y);
+    out.z.push_back(p.z);
+    out.s.push_back(p.s);
+    out.angle.push_back(std::atan2(direction * p.dz_dy, direction));
+  };
+  if (isampl == -1) {
+    for (std::size_t i = 0; i < points.y.size(); ++i) {
+      wheelrail::CurvePoint p = c.at_y(points.y[i]);
+      p.y = points.y[i];
+      p.z = points.z[i];
+      add(p);
+    }
+  } else {
+    for (double v : at) add(c.at_s(v));
+  }
+  return out;
+}
+
+}  // namespace
+}  // namespace rollcontact::cntc
+
+using namespace rollcontact;
+using namespace rollcontact::cntc;
+
+CNTC_EXPORT void cntc_getprofilevalues(int* ire, int* itask, int* nints, int* iparam, int* nreals,
+                                       double* rparam, int* lenarr, double* values) {
+  constexpr const char* name = "cntc_getprofilevalues";
+  if (ire == nullptr || itask == nullptr || lenarr == nullptr || values == nullptr) return;
+  Module1Problem* p = library().open(*ire, -1, Access::Module1, name).m1;
+  if (p == nullptr) return;
+  const int n_i = nints != nullptr ? *nints : 0, n_r = nreals != nullptr ? *nreals : 0;
+  const bool wheel = n_i >= 1 && iparam != nullptr && std::clamp(iparam[0], 0, 1) == 1;
+  const int isampl = n_i >= 2 && iparam != nullptr ? iparam[1] : 0;
+  const double ds_out = n_r >= 1 && rparam != nullptr ? rparam[0] : 1.0;
+  const format::ProfileSpec& spec = wheel ? p->record.wheel : p->record.rail;
+  const std::string& error = wheel ? p->wheel_error : p->rail_error;
+  const bool missing = spec.profile.y.empty() || !error.empty();
+  auto put = [&](const std::vector<double>& v, int offset) {
+    for (std::size_t k = 0; k < v.size() && offset + static_cast<int>(k) < *lenarr; ++k)
+      values[offset + static_cast<int>(k)] = v[k];
+  };
+  if (*itask == -1) return put({missing ? -32.0 : 0.0, missing ? 1.0 : 0.0}, 0);
+  if (missing) return put({-32.0}, 0);
+  if (*itask < 0 || *itask > 9 || *itask == 2 || *itask == 3 || *itask >= 6) {
+    library().log(
+        fmt::format("{}: task {} not available yet (served: -1, 0, 1, 4, 5)", name, *itask));
+    return;
+  }
+  try {
+    const wheelrail::ProfileCurve curve(format::to_wheelrail_profile(spec), !wheel);
+    const Samples s = sample(curve, spec.profile, isampl, ds_out);
+    const int n = static_cast<int>(s.y.size());
+    switch (*itask) {
+      case 0:
+        return put({double(n)}, 0);
+      case 1:  // own coordinates, mm (not scaled)
+        put(s.y, 0);
+        return put(s.z, n);
+      case 4:
+        return put(s.s, 0);
+      default:  // 5: surface angle atan2(dz, dy) [rad]
+        return put(s.angle, 0);
+    }
+  } catch (const Error& e) {
+    library().log(std::string(name) + ": " + e.what());
+    put({-32.0}, 0);
+  }
+}
+
+CNTC_EXPORT void cntc_getprofilevalues_new(int* ire, int* itask, int* nints, int* iparam,
+                                           int* nreals, double* rparam, int* lenarr,
+                                           double* values) {
+  cntc_getprofilevalues(ire, itask, nints, iparam, nreals, rparam, lenarr, values);
+}

@@ -1,0 +1,203 @@
+// The remaining cntc_* routines against physics and against the routes they must agree with:
+// subsurface stresses under a Hertzian pressure (Johnson's closed form on the axis), profile
+// values of a circular profile given as points, readinpfile = the same case set by calls,
+// extra rigid slip, material parameters read back.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "rollcontact/contact_addon.h"
+
+namespace {
+
+/// A frictionless Hertzian contact on (ire, 1): circle of radius a = 2 mm, FN = 1000 N.
+void hertz_normal(int ire, int mx) {
+  int icp = 1, imodul = 3, ifcver = 0, ierror = 0, one = 1;
+  cntc_initialize(&ire, &imodul, &ifcver, &ierror, " ", &one);
+  int flags[] = {CNTC_ic_tang, CNTC_ic_norm};
+  int values[] = {0, 1};
+  int nflags = 2;
+  cntc_setflags(&ire, &icp, &nflags, flags, values);
+  int ipotcn = -3, nhertz = 5;
+  double hertz[] = {double(mx), double(mx), 2.0, 2.0, 1.05};
+  cntc_sethertzcontact(&ire, &icp, &ipotcn, &nhertz, hertz);
+  double fn = 1000.0;
+  cntc_setnormalforce(&ire, &icp, &fn);
+}
+
+TEST(CntcSubsurface, StressOnTheAxisFollowsHertz) {
+  const int ire = 41;
+  int icp = 1, ierror = 0;
+  hertz_normal(ire, 61);
+  int r = ire;
+  cntc_calculate(&r, &icp, &ierror);
+  ASSERT_GE(ierror, 0);
+  double pmax = 0.0;
+  cntc_getmaximumpressure(&r, &icp, &pmax);
+  // Points on the axis at z = 0.5a and a (isubs 9: x, y, z lists).
+  int iblk = 1, isubs = 9, nx = 1, ny = 1, nz = 2;
+  double x[] = {0.0}, y[] = {0.0}, z[] = {1.0, 2.0};
+  subs_addblock(&r, &icp, &iblk, &isubs, &nx, &ny, &nz, x, y, z);
+  subs_calculate(&r, &icp, &ierror);
+  ASSERT_EQ(ierror, 0);
+  int bx = 0, by = 0, bz = 0;
+  subs_getblocksize(&r, &icp, &iblk, &bx, &by, &bz);
+  ASSERT_EQ(bx * by * bz, 2);
+  int lenarr = 2, ncol = 2, icol[] = {3, 21};  // z, σzz
+  double out[4] = {};
+  subs_getresults(&r, &icp, &iblk, &lenarr, &ncol, icol, out);
+  const double p0 = 3.0 * 1000.0 / (2.0 * std::numbers::pi * 4.0);  // Hertz peak pressure
+  EXPECT_NEAR(pmax, p0, 0.02 * p0);
+  for (int k = 0; k < 2; ++k) {
+    const double zk = out[k], a = 2.0;
+    EXPECT_DOUBLE_EQ(zk, z[k]);
+    // Johnson (3.45): σzz = −p0 / (1 + z²/a²) on the axis; 2 % for the 58-element diameter.
+    const double expected = -p0 / (1.0 + zk * zk / (a * a));
+    EXPECT_NEAR(out[2 + k], expected, 0.02 * p0) << "z = " << zk;
+  }
+  int bad = 7, ncol1 = 1, invalid = 99;
+  double untouched = -5.0;
+  subs_getresults(&r, &icp, &bad, &lenarr, &ncol1, &invalid, &untouched);
+  EXPECT_EQ(untouched, -5.0);  // a block that does not exist leaves the array alone
+  cntc_finalize(&r);
+}
+
+TEST(CntcParameters, MaterialAndFrictionReadBack) {
+  const int ire = 42;
+  int r = ire, icp = 1, ierror = 0;
+  hertz_normal(ire, 21);
+  int m = 0, nmat = 4;
+  double material[] = {0.25, 0.3, 80000.0, 70000.0};
+  cntc_setmaterialparameters(&r, &icp, &m, &nmat, material);
+  int law = 0, nfric = 2;
+  double friction[] = {0.35, 0.3};  // the smaller one for both (§2.2)
+  cntc_setfrictionmethod(&r, &icp, &law, &nfric, friction);
+  cntc_calculate(&r, &icp, &ierror);
+  ASSERT_GE(ierror, 0);
+  int itask = 2, lenarr = 22;
+  std::vector<double> v(22, -1.0);
+  cntc_getparameters(&r, &icp, &itask, &lenarr, v.data());
+  EXPECT_EQ(v[0], 80000.0);
+  EXPECT_EQ(v[1], 70000.0);
+  const double g = 2.0 / (1.0 / 80000.0 + 1.0 / 70000.0);
+  EXPECT_NEAR(v[2], g, 1e-9 * g);  // combined modulus (physics.md §3.1)
+  EXPECT_EQ(v[3], 0.25);
+  itask = 3;
+  cntc_getparameters(&r, &icp, &itask, &lenarr, v.data());
+  EXPECT_EQ(v[0], 0.0);  // L
+  EXPECT_EQ(v[1], 1.0);  // one set
+  EXPECT_EQ(v[5], 0.3);  // fstat = fkin = min
+  EXPECT_EQ(v[6], 0.3);
+  cntc_finalize(&r);
+}
+
+TEST(CntcExtraRigidSlip, ActsLikeAShiftOfTheSameSize) {
+  // A shift problem: an extra rigid slip wx everywhere adds to the shift (same unit, mm).
+  auto solve = [](int ire, double shift, double extra) {
+    int r = ire, icp = 1, ierror = 0;
+    hertz_normal(ire, 21);
+    int flags[] = {CNTC_ic_tang};
+    int values[] = {1};
+    int nflags = 1;
+    cntc_setflags(&r, &icp, &nflags, flags, values);
+    double zero = 0.0;
+    cntc_setcreepages(&r, &icp, &shift, &zero, &zero);
+    if (extra != 0.0) {
+      int n = 21 * 21;
+      std::vector<double> wx(n, extra), wy(n, 0.0);
+      cntc_setextrarigidslip(&r, &icp, &n, wx.data(), wy.data());
+    }
+    cntc_calculate(&r, &icp, &ierror);
+    double f[4] = {};
+    cntc_getcontactforces(&r, &icp, &f[0], &f[1], &f[2], &f[3]);
+    cntc_finalize(&r);
+    return f[1];
+  };
+  const double plain = solve(43, 2e-3, 0.0), split = solve(44, 1e-3, 1e-3);
+  EXPECT_GT(std::abs(plain), 1.0);
+  EXPECT_NEAR(split, plain, 1e-6 * std::abs(plain));
+}
+
+TEST(CntcProfiles, CircleGivenAsPointsSamplesBack) {
+  // A rail head of radius 300 mm over ±30 mm, as points; its samples lie on the circle, the arc
+  // length ends at the arc's length and the surface angle is the circle's slope angle.
+  int ire = 45, imodul = 1, ifcver = 0, ierror = 0, one = 1;
+  cntc_initialize(&ire, &imodul, &ifcver, &ierror, " ", &one);
+  const double radius = 300.0;
+  std::vector<double> yz;
+  for (int k = 0; k <= 60; ++k) {
+    const double y = -30.0 + k;
+    yz.push_back(y);
+    yz.push_back(radius - std::sqrt(radius * radius - y * y));  // z downwards
+  }
+  int npoint = 61, nints = 1, iparam[] = {0}, nreals = 0;
+  cntc_setprofileinputvalues(&ire, &npoint, yz.data(), &nints, iparam, &nreals, nullptr);
+  int task = -1, lenarr = 400, getints = 2, getparam[] = {0, 1}, getreals = 1;
+  double ds[] = {0.5};
+  std::vector<double> v(400, 0.0);
+  cntc_getprofilevalues(&ire, &task, &getints, getparam, &getreals, ds, &lenarr, v.data());
+  EXPECT_EQ(v[0], 0.0);  // loaded without error
+  task = 0;
+  cntc_getprofilevalues(&ire, &task, &getints, getparam, &getreals, ds, &lenarr, v.data());
+  const int n = static_cast<int>(v[0]);
+  const double arc = 2.0 * radius * std::asin(30.0 / radius);
+  EXPECT_EQ(n, static_cast<int>(std::floor(arc / 0.5 + 1e-9)) + 1);
+  ASSERT_LE(2 * n, lenarr);
+  task = 1;
+  cntc_getprofilevalues(&ire, &task, &getints, getparam, &getreals, ds, &lenarr, v.data());
+  for (int k = 0; k < n; ++k) {
+    const double y = v[k], z = v[n + k];
+    EXPECT_NEAR(std::hypot(y, z - radius), radius, 1e-3) << k;  // on the circle (spline)
+  }
+  task = 4;
+  std::vector<double> s(400, 0.0), angle(400, 0.0);
+  cntc_getprofilevalues(&ire, &task, &getints, getparam, &getreals, ds, &lenarr, s.data());
+  EXPECT_NEAR(s[n - 1], 0.5 * (n - 1), 1e-9);
+  task = 5;
+  cntc_getprofilevalues(&ire, &task, &getints, getparam, &getreals, ds, &lenarr, angle.data());
+  task = 1;
+  cntc_getprofilevalues(&ire, &task, &getints, getparam, &getreals, ds, &lenarr, v.data());
+  for (int k = 0; k < n; k += 10) {
+    const double y = v[k];
+    if (std::abs(y) > 27.0) continue;  // the natural spline's end conditions bend the ends
+    const double slope = y / std::sqrt(radius * radius - y * y);  // dz/dy of the circle
+    EXPECT_NEAR(angle[k], std::atan(slope), 1e-4) << "y = " << y;
+  }
+  cntc_finalize(&ire);
+}
+
+TEST(CntcReadInpFile, GivesTheCaseOfTheFile) {
+  // readinpfile (module-1 .inp) then calculate = the same case built by the set-up calls of
+  // cntc_mbench_wheelrail.c; the reference is rollcontact run's result (tests of that client).
+  const std::filesystem::path examples{ROLLCONTACT_EXAMPLES_DIR};
+  if (!std::filesystem::exists(examples / "mbench_a22_right.inp")) GTEST_SKIP();
+  int ire = 46, inp = 1988, ierror = -1;
+  const std::string file = (examples / "mbench_a22_right.inp").string();
+  int len = static_cast<int>(file.size());
+  cntc_readinpfile(&ire, &inp, file.c_str(), &len, &ierror);
+  ASSERT_EQ(ierror, 0);
+  int icp = -1;
+  cntc_calculate(&ire, &icp, &ierror);
+  ASSERT_EQ(ierror, 0);
+  double g[24] = {};
+  int lenarr = 24;
+  cntc_getglobalforces(&ire, &icp, &lenarr, g);
+  // Case 1 of the benchmark (y = 0), CONTACT's reference output: FX(TR) 0.2783 N, FY(TR)
+  // 36.24 N, FZ(TR) 10000 N; the small forces are at the solver's noise level EPS·μ·FZ =
+  // 0.03 N, so they are compared within 0.1 N (1e-5 of FZ).
+  EXPECT_NEAR(g[0], 0.2783, 0.1);
+  EXPECT_NEAR(g[1], 36.24, 0.1);
+  EXPECT_NEAR(g[2], 10000.0, 1.0);
+  int other = 1983;
+  cntc_readinpfile(&ire, &other, file.c_str(), &len, &ierror);
+  EXPECT_EQ(ierror, CNTC_err_input);
+  cntc_finalize(&ire);
+}
+
+}  // namespace
