@@ -18,3 +18,21 @@ endif()
 if(ROLLCONTACT_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+
+# The Python package: Debian's interpreter (another python3 may come first on PATH) with
+# pybind11-dev. Not in sanitizer or fuzzing builds (the interpreter is not instrumented).
+set(ROLLCONTACT_BUILD_PYTHON OFF)
+if(ROLLCONTACT_PYTHON AND NOT ROLLCONTACT_SANITIZE AND NOT ROLLCONTACT_SANITIZE_THREAD
+   AND NOT ROLLCONTACT_FUZZ)
+  if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python_EXECUTABLE /usr/bin/python3)
+  endif()
+  find_package(Python COMPONENTS Interpreter Development.Module)
+  set(PYBIND11_FINDPYTHON ON)
+  find_package(pybind11 CONFIG)
+  if(Python_FOUND AND pybind11_FOUND)
+    set(ROLLCONTACT_BUILD_PYTHON ON)
+  else()
+    message(WARNING "Python package not built: needs /usr/bin/python3 with python3-dev and pybind11-dev (scripts/install-deps.sh)")
+  endif()
+endif()

@@ -27,6 +27,7 @@ set(allowed_format/report "format/report;format/inp;format/text")
 set(allowed_batch "batch;format/text;format/profiles;format/inp;format/toml;format/report;wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 
 set(allowed_bindings/c "bindings;format/inp;format/profiles;format/text;wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
+set(allowed_bindings/python "bindings;batch;format/toml;format/inp;format/text;format/report;format/profiles;wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 
 set(violations "")
 function(check_folder folder files)
@@ -55,7 +56,7 @@ function(check_folder folder files)
 endfunction()
 
 foreach(folder model core grid physics elastic elastic/operators geometry normal tangential simplified post contact wheelrail
-               format/text format/profiles format/inp format/toml format/report batch bindings/c)
+               format/text format/profiles format/inp format/toml format/report batch bindings/c bindings/python)
   file(GLOB files "${ROOT}/src/${folder}/*.hpp" "${ROOT}/src/${folder}/*.cpp")
   check_folder(${folder} "${files}")
 endforeach()

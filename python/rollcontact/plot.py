@@ -1,0 +1,117 @@
+"""Plots of rollcontact results with matplotlib (imported on first use).
+
+Each function draws into `ax` (a new figure when None) and returns the Axes; save with
+ax.figure.savefig("fig.png", dpi=150). Axes carry units, colour bars their quantity, and the
+adhesion/slip boundary is drawn where there is one.
+"""
+
+import numpy as np
+
+_FIELDS = {
+    "pressure": ("pn", "normal pressure p$_n$ [N/mm$^2$]"),
+    "traction": (None, "tangential traction |p$_t$| [N/mm$^2$]"),
+    "slip": (None, "relative slip |s| [-]"),
+}
+
+
+def _axes(ax):
+    if ax is not None:
+        return ax
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    _, ax = plt.subplots(figsize=(6.4, 4.8), constrained_layout=True)
+    return ax
+
+
+def _edges(centres, step):
+    return np.concatenate([centres - 0.5 * step, [centres[-1] + 0.5 * step]])
+
+
+def field(result, what="pressure", ax=None, title=None):
+    """A field over the grid: 'pressure', 'traction' (magnitude, with arrows) or 'slip', with
+    the contact edge (black) and the adhesion/slip boundary (white dashed)."""
+    if what not in _FIELDS:
+        raise ValueError(f"what must be one of {sorted(_FIELDS)}, not {what!r}")
+    ax = _axes(ax)
+    g = result["grid"]
+    x, y = g["x"], g["y"]
+    if what == "pressure":
+        values = result["pn"]
+    elif what == "traction":
+        values = np.hypot(result["px"], result["py"])
+    else:
+        values = np.hypot(result["sx"], result["sy"])
+    mesh = ax.pcolormesh(_edges(x, g["dx"]), _edges(y, g["dy"]), values, cmap="viridis",
+                         shading="flat")
+    ax.figure.colorbar(mesh, ax=ax, label=_FIELDS[what][1])
+    state = result["state"]
+    if state.max() > 0 and len(x) > 1 and len(y) > 1:
+        ax.contour(x, y, (state > 0).astype(float), levels=[0.5], colors="k", linewidths=1.0)
+        if (state == 1).any() and (state == 2).any():
+            ax.contour(x, y, (state == 2).astype(float), levels=[0.5], colors="w",
+                       linewidths=1.0, linestyles="--")
+    if what == "traction":
+        step = max(1, len(x) // 20)
+        ax.quiver(x[::step], y[::step], result["px"][::step, ::step],
+                  result["py"][::step, ::step], color="w", width=0.003)
+    ax.set_xlabel("x [mm] (rolling direction)")
+    ax.set_ylabel("y [mm]")
+    ax.set_aspect("equal")
+    ax.set_title(title or f"{_FIELDS[what][1].split(' [')[0]}, F$_n$ = {result['fn']:.4g} N")
+    return ax
+
+
+def traction_profile(result, row=None, ax=None, mu=None, title=None):
+    """p_x, p_y along one grid row (default: the row through the maximum pressure), with the
+    traction bound mu·p_n when mu is given."""
+    ax = _axes(ax)
+    pn = result["pn"]
+    iy = int(np.unravel_index(np.argmax(pn), pn.shape)[0]) if row is None else int(row)
+    x = result["grid"]["x"]
+    ax.plot(x, result["px"][iy], label="p$_x$")
+    ax.plot(x, result["py"][iy], label="p$_y$")
+    if mu is not None:
+        ax.plot(x, mu * pn[iy], "k--", label="$\\mu$ p$_n$")
+        ax.plot(x, -mu * pn[iy], "k--")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("traction [N/mm$^2$]")
+    ax.legend()
+    ax.set_title(title or f"tractions along row {iy + 1} (y = {result['grid']['y'][iy]:.3g} mm)")
+    return ax
+
+
+def creep_curve(results, x="creep_x", y="fx", ax=None, normalise=True, title=None):
+    """A creep-force curve of a sweep: y (default F_x, divided by F_n when normalise) against
+    x (default the longitudinal creepage)."""
+    ax = _axes(ax)
+    xs = np.array([r[x] for r in results])
+    ys = np.array([r[y] / r["fn"] if normalise else r[y] for r in results])
+    ax.plot(xs, ys, "o-")
+    ax.set_xlabel({"creep_x": "creepage $\\xi$ [-]", "creep_y": "creepage $\\eta$ [-]",
+                   "spin": "spin $\\varphi$ [rad/mm]"}.get(x, x))
+    ax.set_ylabel(f"{y.upper()}/F$_n$ [-]" if normalise else f"{y.upper()} [N]")
+    ax.grid(True, alpha=0.3)
+    ax.set_title(title or "creep-force curve")
+    return ax
+
+
+def profiles(rail, wheel=None, contact_points=None, ax=None, title=None):
+    """Rail and wheel profiles, each a pair (y, z) of arrays [mm] (z downwards, as CONTACT), and
+    optionally contact points [(y, z), ...] in the same frame."""
+    ax = _axes(ax)
+    ax.plot(rail[0], rail[1], "k-", label="rail")
+    if wheel is not None:
+        ax.plot(wheel[0], wheel[1], "b-", label="wheel")
+    if contact_points:
+        pts = np.asarray(contact_points, dtype=float)
+        ax.plot(pts[:, 0], pts[:, 1], "ro", label="contact")
+    ax.invert_yaxis()  # z downwards
+    ax.set_xlabel("y [mm]")
+    ax.set_ylabel("z [mm] (downwards)")
+    ax.set_aspect("equal")
+    ax.legend()
+    ax.set_title(title or "profiles")
+    return ax

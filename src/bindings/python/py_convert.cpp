@@ -1,0 +1,118 @@
+#include "bindings/python/py_convert.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <memory>
+
+namespace py = pybind11;
+
+namespace rollcontact::python {
+namespace {
+
+/// A (my, mx) array over `field`, owned by `owner` (no copy).
+py::array_t<double> field_view(const Grid& g, std::vector<double>& field, py::handle owner) {
+  if (field.size() != g.size()) return py::array_t<double>(0);
+  const auto mx = static_cast<py::ssize_t>(g.mx), my = static_cast<py::ssize_t>(g.my);
+  return py::array_t<double>(
+      {my, mx},
+      {mx * static_cast<py::ssize_t>(sizeof(double)), static_cast<py::ssize_t>(sizeof(double))},
+      field.data(), owner);
+}
+
+py::array_t<double> coordinates(int n, double first_centre, double step) {
+  py::array_t<double> a(n);
+  auto v = a.mutable_unchecked<1>();
+  for (int i = 0; i < n; ++i) v(i) = first_centre + i * step;
+  return a;
+}
+
+}  // namespace
+
+py::dict solution_to_dict(Solution solution) {
+  auto* held = new Solution(std::move(solution));
+  const py::capsule owner(held, [](void* p) { delete static_cast<Solution*>(p); });
+  Solution& s = *held;
+  const Grid& g = s.grid;
+  py::dict d;
+  d["converged"] = s.solver.converged;
+  d["message"] = s.solver.message;
+  d["warnings"] = s.warnings;
+  py::dict grid;
+  grid["mx"] = g.mx;
+  grid["my"] = g.my;
+  grid["dx"] = g.dx;
+  grid["dy"] = g.dy;
+  grid["x"] = coordinates(g.mx, g.x_centre(0), g.dx);  // element centres [mm]
+  grid["y"] = coordinates(g.my, g.y_centre(0), g.dy);
+  d["grid"] = grid;
+  const Totals& t = s.totals;
+  d["fn"] = t.fn;
+  d["fx"] = t.fx;
+  d["fy"] = t.fy;
+  d["mz"] = t.mz;
+  d["pen"] = t.pen;
+  d["pmax"] = t.pmax;
+  d["creep_x"] = t.creep_x;
+  d["creep_y"] = t.creep_y;
+  d["spin"] = t.spin;
+  d["shift_x"] = t.shift_x;
+  d["shift_y"] = t.shift_y;
+  d["elastic_energy"] = t.elastic_energy;
+  d["frictional_power"] = t.frictional_power;
+  d["contact_area"] = t.contact_area;
+  const Statistics& st = s.statistics;
+  d["statistics"] =
+      py::dict(py::arg("npot") = st.npot, py::arg("ncon") = st.ncon, py::arg("nadh") = st.nadh,
+               py::arg("nslip") = st.nslip, py::arg("nplast") = st.nplast);
+  d["material"] = py::dict(py::arg("g") = s.material.g, py::arg("nu") = s.material.nu,
+                           py::arg("k") = s.material.k);
+  for (auto [name, field] : {std::pair{"pn", &s.pn},
+                             {"px", &s.px},
+                             {"py", &s.py},
+                             {"sx", &s.sx},
+                             {"sy", &s.sy},
+                             {"ux", &s.ux},
+                             {"uy", &s.uy},
+                             {"un", &s.un},
+                             {"h", &s.h}})
+    d[name] = field_view(g, *field, owner);
+  py::array_t<std::int8_t> state({static_cast<py::ssize_t>(g.my), static_cast<py::ssize_t>(g.mx)});
+  auto sv = state.mutable_unchecked<2>();
+  for (int iy = 0; iy < g.my; ++iy)
+    for (int ix = 0; ix < g.mx; ++ix)
+      sv(iy, ix) = s.state.empty() ? 0 : static_cast<std::int8_t>(s.state[g.index(ix, iy)]);
+  d["state"] = state;  // 0 exterior, 1 adhesion, 2 slip, 3 plastic
+  return d;
+}
+
+py::dict wheelrail_to_dict(WheelRailSolution solution) {
+  py::dict d;
+  d["converged"] = solution.converged;
+  d["message"] = solution.message;
+  d["warnings"] = solution.warnings;
+  d["force_tr"] =
+      std::vector<double>{solution.force_tr.x, solution.force_tr.y, solution.force_tr.z};
+  d["force_ws"] =
+      std::vector<double>{solution.force_ws.x, solution.force_ws.y, solution.force_ws.z};
+  d["z_ws"] = solution.z_ws_mm;
+  py::list patches;
+  for (WheelRailPatch& w : solution.patches) {
+    py::dict p = solution_to_dict(std::move(w.solution));
+    p["reference_tr"] = std::vector<double>{w.reference_tr.x, w.reference_tr.y, w.reference_tr.z};
+    p["contact_angle"] = w.contact_angle_rad;
+    p["reference_rail"] = std::vector<double>{w.y_rail_mm, w.z_rail_mm};
+    p["reference_wheel"] =
+        std::vector<double>{w.reference_wheel.x, w.reference_wheel.y, w.reference_wheel.z};
+    p["xi"] = w.xi;
+    p["eta"] = w.eta;
+    p["phi"] = w.phi_per_mm;
+    p["force_tr"] = std::vector<double>{w.force_tr.x, w.force_tr.y, w.force_tr.z};
+    p["force_ws"] = std::vector<double>{w.force_ws.x, w.force_ws.y, w.force_ws.z};
+    patches.append(p);
+  }
+  d["patches"] = patches;
+  return d;
+}
+
+}  // namespace rollcontact::python

@@ -1,0 +1,99 @@
+// The compiled part of the Python package `rollcontact` (module rollcontact._rollcontact):
+// running CONTACT input files and solving cases given as TOML text, results as dicts with
+// NumPy arrays (py_convert.hpp). The pure-Python part (python/rollcontact/) builds the TOML text
+// from dicts, sweeps parameters and plots. C++ exceptions become Python exceptions:
+// InputError → ValueError (bad input, with file and line), other rollcontact errors →
+// RuntimeError.
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <string>
+
+#include "batch/run_input.hpp"
+#include "bindings/python/py_convert.hpp"
+#include "format/toml/toml_case_reader.hpp"
+#include "rollcontact/errors.hpp"
+#include "rollcontact/solve.hpp"
+#include "rollcontact/version.hpp"
+
+namespace py = pybind11;
+using namespace rollcontact;
+
+namespace {
+
+/// One case of a run: its number, module, status and results.
+py::dict outcome_to_dict(batch::CaseOutcome& o) {
+  py::dict d;
+  if (o.wheel_rail && o.solved) {
+    d = python::wheelrail_to_dict(std::move(o.wheelrail));
+  } else if (o.solved) {
+    d = python::solution_to_dict(std::move(o.solution));
+  }
+  d["case"] = o.problem.case_number;
+  d["result_element"] = o.problem.result_element;
+  d["module"] = o.wheel_rail ? 1 : 3;
+  d["solved"] = o.solved;
+  d["skipped"] = o.skipped;
+  d["error"] = o.error;
+  return d;
+}
+
+/// Runs an input file as `rollcontact run` does (reports next to it or in `output_dir`).
+py::list run_file(const std::filesystem::path& path, const std::filesystem::path& output_dir) {
+  batch::RunOptions options;
+  options.output_dir = output_dir;
+  batch::RunResult r;
+  {
+    py::gil_scoped_release release;
+    r = batch::run_input_file(path, options);
+  }
+  py::list cases;
+  for (auto& o : r.cases) cases.append(outcome_to_dict(o));
+  return cases;
+}
+
+/// A solver that keeps its state between cases (operators, sequences): for sweeps.
+class Solver {
+ public:
+  /// Solves every [[case]] of `toml` in order; returns one dict per case.
+  py::list solve_toml(const std::string& toml, const std::string& name) {
+    const auto records = format::read_toml_string(toml, name);
+    py::list out;
+    for (const auto& record : records) {
+      Solution s;
+      {
+        py::gil_scoped_release release;
+        s = batch::solve_case(record, solver_);
+      }
+      py::dict d = python::solution_to_dict(std::move(s));
+      d["case"] = record.case_number;
+      out.append(d);
+    }
+    return out;
+  }
+
+ private:
+  PatchSolver solver_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_rollcontact, m) {
+  m.doc() = "rollcontact: rolling and sliding contact (CONTACT-compatible), compiled core";
+  m.attr("__version__") = rollcontact::version_string;
+  // Translators are tried latest first: the general one first, the input errors after it.
+  py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  m.def("run_file", &run_file, py::arg("path"), py::arg("output_dir") = std::filesystem::path{},
+        "Run every case of a CONTACT .inp or TOML file like `rollcontact run`; returns a list of "
+        "dicts, one per case (fields as NumPy arrays of shape (my, mx)).");
+  py::class_<Solver>(m, "Solver",
+                     "Solves cases given as TOML text, keeping operators and "
+                     "sequences between calls.")
+      .def(py::init<>())
+      .def("solve_toml", &Solver::solve_toml, py::arg("toml"), py::arg("name") = "python",
+           "Solve every [[case]] of the TOML text; one dict per case.");
+}
