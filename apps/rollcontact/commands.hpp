@@ -26,6 +26,8 @@ CommandRunner add_example_command(CLI::App& app);
 CommandRunner add_convert_command(CLI::App& app);
 /// `rollcontact validate DIR`: run the examples of DIR and compare with CONTACT's .ref_out.
 CommandRunner add_validate_command(CLI::App& app);
+/// `rollcontact plot FILE --what ... -o FIG.png`: plots through the Python package.
+CommandRunner add_plot_command(CLI::App& app);
 /// `rollcontact table -o FILE.csv`: the 3220-case creep-force table (Vollebregt et al. 2012).
 CommandRunner add_table_command(CLI::App& app);
 

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   add(add_convert_command);
   add(add_validate_command);
   add(add_table_command);
+  add(add_plot_command);
 
   try {
     app.parse(argc, argv);

@@ -1,6 +1,8 @@
 """python3 -m rollcontact run CASE [-o DIR] | plot CASE --what ... -o FIG.png"""
 
 import argparse
+import json
+import pathlib
 import sys
 import tempfile
 
@@ -30,6 +32,18 @@ def _pick(cases, number, patch):
     return case
 
 
+def _input_of(path):
+    """The input file of a run's .json (its "input", as given to the run), else path."""
+    path = pathlib.Path(path)
+    if path.suffix != ".json":
+        return path
+    given = pathlib.Path(json.loads(path.read_text())["input"])
+    for candidate in (given, path.parent / given, path.parent / given.name):
+        if candidate.exists():
+            return candidate
+    raise SystemExit(f"{path}: its input file {given} was not found")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python3 -m rollcontact")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -37,7 +51,7 @@ def main(argv=None):
     run.add_argument("file")
     run.add_argument("-o", "--output-dir", default=None)
     plot = sub.add_parser("plot", help="solve a file and plot one of its results")
-    plot.add_argument("file")
+    plot.add_argument("file", help=".inp, .toml, or the .json a run wrote")
     plot.add_argument("--what", required=True,
                       choices=["pressure", "traction", "slip", "creep-curve"])
     plot.add_argument("--case", type=int, default=1)
@@ -52,13 +66,18 @@ def main(argv=None):
                 print(_summary(c))
             failed = sum(1 for c in cases if not c["solved"] and not c["skipped"])
             return 1 if failed else 0
+        source = _input_of(args.file)
         with tempfile.TemporaryDirectory() as scratch:
-            cases = rc.run(args.file, scratch)
+            cases = rc.run(source, scratch)
         if args.what == "creep-curve":
             solved = [c for c in cases if c["solved"] and c["module"] == 3]
-            ax = rc.plot.creep_curve(solved)
+            ax = rc.plot.creep_curve(solved, title=f"{source.name}: creep-force curve")
         else:
-            ax = rc.plot.field(_pick(cases, args.case, args.patch), args.what)
+            result = _pick(cases, args.case, args.patch)
+            patch = f", patch {args.patch}" if result is not None and "xi" in result else ""
+            ax = rc.plot.field(result, args.what,
+                               title=f"{source.name}, case {args.case}{patch}: {args.what}, "
+                                     f"F$_n$ = {result['fn']:.4g} N")
         ax.figure.savefig(args.output, dpi=150)
         print(args.output)
         return 0

@@ -55,8 +55,10 @@ def field(result, what="pressure", ax=None, title=None):
                        linewidths=1.0, linestyles="--")
     if what == "traction":
         step = max(1, len(x) // 20)
-        ax.quiver(x[::step], y[::step], result["px"][::step, ::step],
-                  result["py"][::step, ::step], color="w", width=0.003)
+        inside = state[::step, ::step] > 0  # arrows in the contact only
+        px = np.ma.masked_where(~inside, result["px"][::step, ::step])
+        py = np.ma.masked_where(~inside, result["py"][::step, ::step])
+        ax.quiver(x[::step], y[::step], px, py, color="w", width=0.003)
     ax.set_xlabel("x [mm] (rolling direction)")
     ax.set_ylabel("y [mm]")
     ax.set_aspect("equal")

@@ -64,3 +64,14 @@ def test_module_command_line(tmp_path):
     subprocess.run([sys.executable, "-m", "rollcontact", "plot", str(inp), "--what", "pressure",
                     "-o", str(png)], check=True, capture_output=True)
     assert png.stat().st_size > 5000
+
+
+def test_cli_plot_command(cli, tmp_path):
+    # `rollcontact plot` from the C++ CLI, on the .json a run wrote (its input is solved again).
+    inp = tmp_path / "steady.inp"
+    inp.write_text((REPO_EXAMPLES / "steady_rolling.inp").read_text())
+    subprocess.run([cli, "run", "-q", str(inp)], check=True)
+    png = tmp_path / "slip.png"
+    subprocess.run([cli, "plot", str(tmp_path / "steady.json"), "--what", "slip", "-o", str(png)],
+                   check=True, capture_output=True)
+    assert png.stat().st_size > 5000
