@@ -33,6 +33,14 @@ struct WheelRailPatch {
   double dx_mm = 0, ds_mm = 0;                    ///< element sizes in effect
   Vector3 force_tr;                               ///< force on the rail, track coordinates [N]
   Vector3 force_ws;                               ///< force on the rail, wheelset coordinates [N]
+  /// Moment of the patch's force on the rail (physics.md §13.6: (r_ref − r_marker) × F plus the
+  /// torsional moment MN about the contact normal) about the rail marker, in track coordinates,
+  /// and about the wheel marker, in wheelset coordinates [N mm].
+  Vector3 moment_tr, moment_ws;
+  Vector3 reference_ws;                  ///< reference point in wheelset coordinates [mm]
+  double s_rail_mm = 0, s_wheel_mm = 0;  ///< arc length of the reference along the profiles
+  double delta_rail_rad = 0, delta_wheel_rad = 0;  ///< contact angle in rail/wheel-profile frames
+  double pressure_centre_x_mm = 0, pressure_centre_y_mm = 0;  ///< centre of pressure (track)
   /// The patch as a module-3 problem: FN, FX and FS (= fy), MN (= mz, about the reference point),
   /// approach, pmax, energy, power, fields on the patch grid (x rolling, y along the contact).
   Solution solution;
@@ -46,9 +54,19 @@ struct VerticalForceStep {
   double dfz_dz_N_per_mm = 0.0;
 };
 
+/// A profile's origin (marker) placed in the track: position [mm], roll and yaw [rad].
+struct ProfileMarker {
+  Vector3 position;
+  double roll_rad = 0.0, yaw_rad = 0.0;
+};
+
 struct WheelRailSolution {
   std::vector<WheelRailPatch> patches;   ///< sorted by lateral position; empty: no contact
   Vector3 force_tr, force_ws;            ///< totals on the rail [N]
+  Vector3 moment_tr, moment_ws;          ///< totals about the markers (as per patch) [N mm]
+  ProfileMarker rail_marker_tr;          ///< rail-profile origin in track coordinates
+  ProfileMarker wheel_marker_tr;         ///< wheel-profile origin in track coordinates
+  ProfileMarker wheel_marker_ws;         ///< wheel-profile origin in wheelset coordinates
   double z_ws_mm = 0.0;                  ///< wheelset height used (solved when FZ is prescribed)
   std::vector<VerticalForceStep> trace;  ///< N=1 iterates (iteration 0: geometry only)
   bool converged = true;

@@ -93,8 +93,21 @@ double contact_modulus(const model::Bodies& b) {
   return g / (1.0 - nu);
 }
 
-WheelRailPatch describe_patch(const PlacedProfiles& prof, const WheelsetPose& pose,
-                              const PatchSetup& s, Solution sol) {
+/// Centre of pressure of a solution in its own grid coordinates [mm] (0, 0 without pressure).
+std::pair<double, double> pressure_centre(const Solution& s) {
+  double sum = 0.0, sx = 0.0, sy = 0.0;
+  for (int iy = 0; iy < s.grid.my; ++iy)
+    for (int ix = 0; ix < s.grid.mx; ++ix) {
+      const double p = s.pn.empty() ? 0.0 : s.pn[s.grid.index(ix, iy)];
+      sum += p;
+      sx += p * s.grid.x_centre(ix);
+      sy += p * s.grid.y_centre(iy);
+    }
+  return sum > 0.0 ? std::pair{sx / sum, sy / sum} : std::pair{0.0, 0.0};
+}
+
+WheelRailPatch describe_patch(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                              const WheelsetPose& pose, const PatchSetup& s, Solution sol) {
   WheelRailPatch w;
   const Vec3 ref = s.frame.origin;
   const double d = s.frame.delta_rad;
@@ -105,8 +118,13 @@ WheelRailPatch describe_patch(const PlacedProfiles& prof, const WheelsetPose& po
   const double a = prof.rail_roll_rad();
   w.y_rail_mm = std::cos(a) * ry + std::sin(a) * rz;
   w.z_rail_mm = -std::sin(a) * ry + std::cos(a) * rz;
+  w.s_rail_mm = prof.rail().at_y(ry).s;
+  w.delta_rail_rad = d - a;
   const Vec3 q = pose.rotation.transposed_times(ref - pose.centre);
+  w.reference_ws = to_public(q);
   w.reference_wheel = {q.x, q.y - prof.wheel_y_offset_mm(), q.z - prof.wheel_r0_mm()};
+  w.s_wheel_mm = prof.wheel().at_y(w.reference_wheel.y).s;
+  w.delta_wheel_rad = d - p.motion.roll_rad;
   w.xi = s.kinematics.xi;
   w.eta = s.kinematics.eta;
   w.phi_per_mm = s.kinematics.phi_per_mm;
@@ -119,20 +137,61 @@ WheelRailPatch describe_patch(const PlacedProfiles& prof, const WheelsetPose& po
   const Vec3 f_tr{fx, fs * std::cos(d) - fn * std::sin(d), fn * std::cos(d) + fs * std::sin(d)};
   w.force_tr = to_public(f_tr);
   w.force_ws = to_public(pose.rotation.transposed_times(f_tr));
+  // Moments (physics.md §13.6): (r_ref − r_marker) × F + R_ref·(0, 0, MN), MN about the normal.
+  const Vec3 mn = sol.totals.mz * Vec3{0.0, -std::sin(d), std::cos(d)};
+  const Vec3 rail_marker{0.0, prof.rail_y_mm(), prof.rail_z_mm()};
+  const Vec3 wheel_marker =
+      pose.centre + pose.rotation * Vec3{0.0, prof.wheel_y_offset_mm(), prof.wheel_r0_mm()};
+  w.moment_tr = to_public(cross(ref - rail_marker, f_tr) + mn);
+  w.moment_ws = to_public(pose.rotation.transposed_times(cross(ref - wheel_marker, f_tr) + mn));
+  const auto [xc, yc] = pressure_centre(sol);
+  w.pressure_centre_x_mm = ref.x + xc;
+  w.pressure_centre_y_mm = ref.y + std::cos(d) * yc;
   w.solution = std::move(sol);
   return w;
+}
+
+/// The rail and wheel markers of the placement (physics.md §13.2).
+void describe_markers(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                      const WheelsetPose& pose, WheelRailSolution& out) {
+  out.rail_marker_tr = {{0.0, prof.rail_y_mm(), prof.rail_z_mm()}, prof.rail_roll_rad(), 0.0};
+  const Vec3 w = Vec3{0.0, prof.wheel_y_offset_mm(), prof.wheel_r0_mm()};
+  out.wheel_marker_ws = {to_public(w), 0.0, 0.0};
+  out.wheel_marker_tr = {to_public(pose.centre + pose.rotation * w), p.motion.roll_rad,
+                         p.motion.yaw_rad};
 }
 
 /// A left wheel is computed as a right one; its lateral components change sign.
 void mirror_to_left(WheelRailSolution& s) {
   auto flip = [](Vector3& v) { v.y = -v.y; };
+  // A moment is an axial vector: mirrored in y its x and z components change sign.
+  auto flip_moment = [](Vector3& m) {
+    m.x = -m.x;
+    m.z = -m.z;
+  };
+  auto flip_marker = [&](ProfileMarker& m) {
+    flip(m.position);
+    m.roll_rad = -m.roll_rad;
+    m.yaw_rad = -m.yaw_rad;
+  };
   flip(s.force_tr);
   flip(s.force_ws);
+  flip_moment(s.moment_tr);
+  flip_moment(s.moment_ws);
+  flip_marker(s.rail_marker_tr);
+  flip_marker(s.wheel_marker_tr);
+  flip_marker(s.wheel_marker_ws);
   for (WheelRailPatch& w : s.patches) {
     flip(w.reference_tr);
     flip(w.reference_wheel);
+    flip(w.reference_ws);
     flip(w.force_tr);
     flip(w.force_ws);
+    flip_moment(w.moment_tr);
+    flip_moment(w.moment_ws);
+    w.delta_rail_rad = -w.delta_rail_rad;
+    w.delta_wheel_rad = -w.delta_wheel_rad;
+    w.pressure_centre_y_mm = -w.pressure_centre_y_mm;
     w.contact_angle_rad = -w.contact_angle_rad;
     w.y_rail_mm = -w.y_rail_mm;
     w.eta = -w.eta;
@@ -163,7 +222,8 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
         "on the rail (check Y_WS, the gauge and the profiles' orientation)");
   WheelRailSolution out;
   out.z_ws_mm = z_ws;
-  Vec3 total_tr{}, total_ws{};
+  Vec3 total_tr{}, total_ws{}, moment_tr{}, moment_ws{};
+  describe_markers(p, prof, pose, out);
   for (std::size_t k = 0; k < search.patches.size(); ++k) {
     PatchSetup setup = wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings);
     // Steady rolling: the previous solve of this patch position (the last iterate, the last
@@ -182,13 +242,17 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
       out.converged = false;
       out.message = fmt::format("patch {}: {}", k + 1, sol.solver.message);
     }
-    WheelRailPatch w = describe_patch(prof, pose, setup, std::move(sol));
+    WheelRailPatch w = describe_patch(p, prof, pose, setup, std::move(sol));
     total_tr = total_tr + Vec3{w.force_tr.x, w.force_tr.y, w.force_tr.z};
     total_ws = total_ws + Vec3{w.force_ws.x, w.force_ws.y, w.force_ws.z};
+    moment_tr = moment_tr + Vec3{w.moment_tr.x, w.moment_tr.y, w.moment_tr.z};
+    moment_ws = moment_ws + Vec3{w.moment_ws.x, w.moment_ws.y, w.moment_ws.z};
     out.patches.push_back(std::move(w));
   }
   out.force_tr = to_public(total_tr);
   out.force_ws = to_public(total_ws);
+  out.moment_tr = to_public(moment_tr);
+  out.moment_ws = to_public(moment_ws);
   geometry_seconds += since(start);
   return out;
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -198,6 +199,70 @@ TEST(CntcReadInpFile, GivesTheCaseOfTheFile) {
   cntc_readinpfile(&ire, &other, file.c_str(), &len, &ierror);
   EXPECT_EQ(ierror, CNTC_err_input);
   cntc_finalize(&ire);
+}
+
+/// The Manchester benchmark wheel (0 left, 1 right) at y_ws = 0 read from its .inp with C1
+/// replaced; returns the element number.
+int centred_wheel(int ire, int side, const std::filesystem::path& dir) {
+  std::ifstream in(dir / "mbench_a22_right.inp");
+  std::string text, line;
+  for (int n = 1; std::getline(in, line) && n <= 26; ++n) {
+    if (n == 13) line[1] = static_cast<char>('0' + side);  // the C digit of C-P-B-T-N-F-S
+    text += line + "\n";
+  }
+  const auto file = std::filesystem::temp_directory_path() / ("cntc_side" + std::to_string(side));
+  std::filesystem::create_directories(file);
+  for (const char* name : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
+    std::filesystem::copy_file(dir / name, file / name,
+                               std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(file / "case.inp") << text << " 0 MODULE\n";
+  const std::string path = (file / "case.inp").string();
+  int inp = 1988, len = static_cast<int>(path.size()), ierror = -1, icp = -1;
+  cntc_readinpfile(&ire, &inp, path.c_str(), &len, &ierror);
+  EXPECT_EQ(ierror, 0);
+  cntc_calculate(&ire, &icp, &ierror);
+  EXPECT_EQ(ierror, 0);
+  return ire;
+}
+
+TEST(CntcWheelRail, MomentsAndMarkersFollowTheForcesAndMirrorBetweenWheels) {
+  const std::filesystem::path dir{ROLLCONTACT_EXAMPLES_DIR};
+  if (!std::filesystem::exists(dir / "mbench_a22_right.inp")) GTEST_SKIP();
+  std::array<std::array<double, 24>, 2> g{};
+  std::array<std::array<double, 38>, 2> loc{};
+  for (int side = 0; side < 2; ++side) {
+    int ire = centred_wheel(47 + side, side, dir), icp = -1, patch = 1, n24 = 24, n38 = 38;
+    cntc_getglobalforces(&ire, &icp, &n24, g[side].data());
+    cntc_getcontactlocation(&ire, &patch, &n38, loc[side].data());
+    int npatch = 0;
+    cntc_getnumcontactpatches(&ire, &npatch);
+    ASSERT_EQ(npatch, 1);
+    double fn = 0, fx = 0, fs = 0, mn = 0;
+    cntc_getcontactforces(&ire, &patch, &fn, &fx, &fs, &mn);
+    // physics.md §13.6: M = (r_ref − r_marker) × F + MN·n, n = (0, −sin δ, cos δ), about the
+    // rail marker (0, y_r, z_r) in track coordinates.
+    const double d = loc[side][3];
+    const double rx = loc[side][0], ry = loc[side][1] - loc[side][25],
+                 rz = loc[side][2] - loc[side][26];
+    const double fxt = g[side][0], fyt = g[side][1], fzt = g[side][2];
+    const double tol = 1e-9 * fzt * 1000.0;
+    EXPECT_NEAR(g[side][3], ry * fzt - rz * fyt, tol);
+    EXPECT_NEAR(g[side][4], rz * fxt - rx * fzt - mn * std::sin(d), tol);
+    EXPECT_NEAR(g[side][5], rx * fyt - ry * fxt + mn * std::cos(d), tol);
+    cntc_finalize(&ire);
+  }
+  // A centred wheelset is symmetric: the left wheel is the mirror image of the right one in
+  // track coordinates (CONTACT's reference: FY(TR) -36.24 and +36.24 N).
+  const double tol = 1e-6 * g[1][2];
+  EXPECT_NEAR(g[0][1], -g[1][1], tol);           // FY
+  EXPECT_NEAR(g[0][2], g[1][2], tol);            // FZ
+  EXPECT_NEAR(g[0][3], -g[1][3], tol * 1000.0);  // MX
+  EXPECT_NEAR(g[0][4], g[1][4], tol * 1000.0);   // MY
+  EXPECT_NEAR(g[0][5], -g[1][5], tol * 1000.0);  // MZ
+  EXPECT_NEAR(loc[0][1], -loc[1][1], 1e-9);      // reference y
+  EXPECT_NEAR(loc[0][25], -loc[1][25], 1e-9);    // rail marker y
+  EXPECT_NEAR(loc[0][21], -loc[1][21], 1e-9);    // wheel marker y
+  EXPECT_NEAR(g[1][1], 36.24, 0.1);
 }
 
 }  // namespace

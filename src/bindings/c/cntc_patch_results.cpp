@@ -1,7 +1,9 @@
 // Results per contact patch (spec library-api.md §2.9): a module-3 problem's solution, or patch
 // icp of the last wheel/rail solution. Outputs are in the problem's units, tangential ones with
-// the body sign, lateral ones (y, FY, MZ, η, φ) with the left-side sign; before a result
-// exists, or for a patch that was not found, the outputs are left untouched.
+// the body sign. A left wheel's totals (FS, MN, η, φ) are already in CONTACT's output
+// convention; its fields are still those of the mirrored (right-wheel) computation, so they get
+// the left-side sign (py, uy, sy) and are numbered in reverse along y. Before a result exists,
+// or for a patch that was not found, the outputs are left untouched.
 
 #include <fmt/format.h>
 
@@ -146,8 +148,8 @@ CNTC_EXPORT void cntc_getcreepages(int* ire, int* icp, double* vx, double* vy, d
   if (!v || vx == nullptr || vy == nullptr || phi == nullptr) return;
   const double body = v->units.body, len = v->units.length;
   *vx = body * (v->shift ? v->xi / len : v->xi);
-  *vy = body * v->left * (v->shift ? v->eta / len : v->eta);
-  *phi = body * v->left * (v->shift ? v->phi : v->phi * len);
+  *vy = body * (v->shift ? v->eta / len : v->eta);
+  *phi = body * (v->shift ? v->phi : v->phi * len);
 }
 
 CNTC_EXPORT void cntc_getcontactforces(int* ire, int* icp, double* fn, double* tx, double* ty,
@@ -158,8 +160,8 @@ CNTC_EXPORT void cntc_getcontactforces(int* ire, int* icp, double* fn, double* t
   const double body = v->units.body;
   *fn = t.fn;
   *tx = body * t.fx;
-  *ty = body * v->left * t.fy;
-  *mz = body * v->left * t.mz / v->units.length;
+  *ty = body * t.fy;
+  *mz = body * t.mz / v->units.length;
 }
 
 CNTC_EXPORT void cntc_getcontactpatchareas(int* ire, int* icp, double* carea, double* harea,

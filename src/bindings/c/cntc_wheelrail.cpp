@@ -311,47 +311,90 @@ CNTC_EXPORT void cntc_getglobalforces(int* ire, int* icp, int* lenarr, double* v
   for (int k = 0; k < *lenarr; ++k) values[k] = 0.0;  // invalid patch or no result: zeros
   if (!p->result) return;
   const WheelRailSolution& s = *p->result;
-  Vector3 tr, ws;
+  Vector3 f_tr, f_ws, m_tr, m_ws;
   if (*icp == -1) {
-    tr = s.force_tr;
-    ws = s.force_ws;
+    f_tr = s.force_tr, f_ws = s.force_ws, m_tr = s.moment_tr, m_ws = s.moment_ws;
   } else if (*icp >= 1 && *icp <= static_cast<int>(s.patches.size())) {
-    tr = s.patches[static_cast<std::size_t>(*icp - 1)].force_tr;
-    ws = s.patches[static_cast<std::size_t>(*icp - 1)].force_ws;
+    const WheelRailPatch& w = s.patches[static_cast<std::size_t>(*icp - 1)];
+    f_tr = w.force_tr, f_ws = w.force_ws, m_tr = w.moment_tr, m_ws = w.moment_ws;
   } else {
     return;
   }
-  // Forces on the output body; the solution's lateral components are in the left wheel's
-  // mirrored frame, the library's in the track's (§1.4).
-  const double body = p->units.body, left = p->record.is_left() ? -1.0 : 1.0;
-  const double forces[2][3] = {{tr.x, left * tr.y, tr.z}, {ws.x, left * ws.y, ws.z}};
-  for (int frame = 0; frame < 2; ++frame)
+  // The solution is in track coordinates as CONTACT reports it (left wheels included). Forces
+  // act on the output body (body sign); the rail-profile frame is the track frame rolled with
+  // the rail, the wheel-profile frame that of the wheelset.
+  const double a = s.rail_marker_tr.roll_rad;
+  auto rail_frame = [a](Vector3 v) {
+    return Vector3{v.x, std::cos(a) * v.y + std::sin(a) * v.z,
+                   -std::sin(a) * v.y + std::cos(a) * v.z};
+  };
+  const Vector3 blocks[8] = {f_tr, m_tr, f_ws, m_ws, rail_frame(f_tr), rail_frame(m_tr),
+                             f_ws, m_ws};
+  const double body = p->units.body, len = p->units.length;
+  for (int b = 0; b < 8; ++b) {
+    const double scale = body / (b % 2 == 1 ? len : 1.0);  // moments [F·L]
+    const double v[3] = {blocks[b].x, blocks[b].y, blocks[b].z};
     for (int c = 0; c < 3; ++c) {
-      const int k = 6 * frame + c;  // positions 1-3 (track), 7-9 (wheelset)
-      if (k < *lenarr) values[k] = body * forces[frame][c];
+      const int k = 3 * b + c;  // 1-6 track, 7-12 wheelset, 13-18 rail, 19-24 wheel profile
+      if (k < *lenarr) values[k] = scale * v[c];
     }
-  // Positions 4-6, 10-12 (moments about the markers) and 13-24 (profile frames): not yet, 0.
+  }
 }
 
 CNTC_EXPORT void cntc_getcontactlocation(int* ire, int* icp, int* lenarr, double* values) {
   if (icp == nullptr || lenarr == nullptr || values == nullptr) return;
   Module1Problem* p = wheel_rail(ire, "cntc_getcontactlocation", Access::Module1Patch, *icp);
   if (p == nullptr || !p->result) return;
-  const auto& patches = p->result->patches;
+  const WheelRailSolution& s = *p->result;
   std::vector<double> all(38, 0.0);
-  if (*icp >= 1 && *icp <= static_cast<int>(patches.size())) {
-    const WheelRailPatch& w = patches[static_cast<std::size_t>(*icp - 1)];
-    const double len = p->units.length, left = p->record.is_left() ? -1.0 : 1.0;
-    all[0] = w.reference_tr.x / len;  // 1-4: reference point in track coordinates
-    all[1] = left * w.reference_tr.y / len;
-    all[2] = w.reference_tr.z / len;
-    all[3] = left * w.contact_angle_rad;
-    all[4] = w.reference_tr.x / len;  // 5-7: in rail-profile coordinates (s, δ: not yet)
-    all[5] = left * w.y_rail_mm / len;
-    all[6] = w.z_rail_mm / len;
-    all[9] = w.reference_wheel.x / len;  // 10-12: relative to the wheel-profile origin
-    all[10] = left * w.reference_wheel.y / len;
-    all[11] = w.reference_wheel.z / len;
+  if (*icp >= 1 && *icp <= static_cast<int>(s.patches.size())) {
+    const WheelRailPatch& w = s.patches[static_cast<std::size_t>(*icp - 1)];
+    const double len = p->units.length;
+    const Vector3& r = w.reference_tr;
+    const Vector3& q = w.reference_ws;
+    const Vector3& rw = w.reference_wheel;
+    const ProfileMarker& wm = s.wheel_marker_tr;
+    const ProfileMarker& rm = s.rail_marker_tr;
+    const ProfileMarker& wmw = s.wheel_marker_ws;
+    const double filled[38] = {r.x / len,
+                               r.y / len,
+                               r.z / len,
+                               w.contact_angle_rad,  // 1-4 track
+                               r.x / len,
+                               w.y_rail_mm / len,
+                               w.z_rail_mm / len,
+                               w.s_rail_mm / len,  // 5-8 rail
+                               w.delta_rail_rad,   // 9
+                               rw.x / len,
+                               rw.y / len,
+                               rw.z / len,
+                               w.s_wheel_mm / len,  // 10-13 wheel
+                               w.delta_wheel_rad,   // 14
+                               w.pressure_centre_x_mm / len,
+                               w.pressure_centre_y_mm / len,  // 15-16
+                               0.0,
+                               0.0,
+                               0.0,
+                               0.0,  // 17; 18-19 rail deflections (no massless rail yet); 20
+                               wm.position.x / len,
+                               wm.position.y / len,
+                               wm.position.z / len,  // 21-23
+                               wm.roll_rad,
+                               wm.yaw_rad,  // 24-25
+                               rm.position.y / len,
+                               rm.position.z / len,
+                               rm.roll_rad,  // 26-28
+                               0.0,          // 29
+                               q.x / len,
+                               q.y / len,
+                               q.z / len,
+                               w.delta_wheel_rad,  // 30-33
+                               wmw.position.x / len,
+                               wmw.position.y / len,
+                               wmw.position.z / len,  // 34-36
+                               wmw.roll_rad,
+                               wmw.yaw_rad};  // 37-38
+    std::copy(std::begin(filled), std::end(filled), all.begin());
   }
   for (int k = 0; k < std::min(*lenarr, 38); ++k)
     if (k != 28) values[k] = all[static_cast<std::size_t>(k)];  // position 29 is never written
