@@ -53,7 +53,7 @@ def main(argv=None):
     plot = sub.add_parser("plot", help="solve a file and plot one of its results")
     plot.add_argument("file", help=".inp, .toml, or the .json a run wrote")
     plot.add_argument("--what", required=True,
-                      choices=["pressure", "traction", "slip", "creep-curve"])
+                      choices=["pressure", "traction", "slip", "creep-curve", "profiles"])
     plot.add_argument("--case", type=int, default=1)
     plot.add_argument("--patch", type=int, default=1, help="wheel/rail patch (module 1)")
     plot.add_argument("-o", "--output", required=True, help="image file (.png, .pdf, .svg)")
@@ -69,7 +69,12 @@ def main(argv=None):
         source = _input_of(args.file)
         with tempfile.TemporaryDirectory() as scratch:
             cases = rc.run(source, scratch)
-        if args.what == "creep-curve":
+        if args.what == "profiles":
+            case = next((c for c in cases if c["case"] == args.case), None)
+            if case is None or case.get("module") != 1 or not case["solved"]:
+                raise SystemExit(f"case {args.case} is not a solved wheel/rail case")
+            ax = rc.plot.wheelrail(case, title=f"{source.name}, case {args.case}: profiles")
+        elif args.what == "creep-curve":
             solved = [c for c in cases if c["solved"] and c["module"] == 3]
             ax = rc.plot.creep_curve(solved, title=f"{source.name}: creep-force curve")
         else:

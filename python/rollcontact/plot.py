@@ -117,3 +117,43 @@ def profiles(rail, wheel=None, contact_points=None, ax=None, title=None):
     ax.legend()
     ax.set_title(title or "profiles")
     return ax
+
+
+def placed_profiles(case):
+    """The rail and wheel profiles of a wheel/rail result (rc.run on a module-1 file) placed in
+    track coordinates with the solution's markers: ((y_rail, z_rail), (y_wheel, z_wheel)) [mm],
+    z downwards. A left wheel's profiles are mirrored as the track is."""
+    side = -1.0 if case.get("side") == "left" else 1.0
+
+    def place(points, marker, yaw=0.0):
+        yp = side * np.asarray(points["y"]) * np.cos(yaw)
+        zp = np.asarray(points["z"])
+        a = marker["roll"]
+        return (marker["y"] + np.cos(a) * yp - np.sin(a) * zp,
+                marker["z"] + np.sin(a) * yp + np.cos(a) * zp)
+
+    rail = place(case["rail_profile"], case["rail_marker"])
+    wheel = place(case["wheel_profile"], case["wheel_marker"], case["wheel_marker"]["yaw"])
+    return rail, wheel
+
+
+def wheelrail(case, ax=None, margin_mm=40.0, title=None):
+    """A wheel/rail result: the placed rail and wheel profiles around the contact, with each
+    patch's reference point and its extent along the contact (the grid's width)."""
+    rail, wheel = placed_profiles(case)
+    points = [(p["reference_tr"][1], p["reference_tr"][2]) for p in case["patches"]]
+    ax = profiles(rail, wheel, points, ax=ax, title=title)
+    for p in case["patches"]:
+        g, d = p["grid"], p["contact_angle"]
+        width = g["my"] * g["dy"]
+        y0, z0 = p["reference_tr"][1], p["reference_tr"][2]
+        ys = y0 + np.array([-0.5, 0.5]) * width * np.cos(d)
+        zs = z0 + np.array([-0.5, 0.5]) * width * np.sin(d)
+        ax.plot(ys, zs, "r-", linewidth=3, alpha=0.6)
+    if points:
+        yc = np.mean([q[0] for q in points])
+        ax.set_xlim(yc - margin_mm, yc + margin_mm)
+        zc = np.mean([q[1] for q in points])
+        ax.set_ylim(zc + 0.5 * margin_mm, zc - 0.5 * margin_mm)  # z downwards
+    ax.set_xlabel("y [mm] (track)")
+    return ax

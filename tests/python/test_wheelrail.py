@@ -33,3 +33,27 @@ def test_manchester_benchmark_case_from_python(cli, tmp_path):
     assert patch["pn"].shape == (g["my"], g["mx"])
     assert patch["pn"].sum() * g["dx"] * g["dy"] == pytest.approx(patch["fn"], rel=1e-9)
     assert np.isfinite(patch["contact_angle"])
+
+
+def test_placed_profiles_touch_at_the_contact(tmp_path):
+    if not (EXAMPLES / "mbench_a22_right.inp").exists():
+        pytest.skip("CONTACT examples not found")
+    for name in ("MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"):
+        shutil.copy(EXAMPLES / name, tmp_path)
+    lines = (EXAMPLES / "mbench_a22_right.inp").read_text().splitlines()
+    for side in (0, 1):
+        text = list(lines[:26])
+        text[12] = " " + str(side) + text[12][2:]  # the C digit: left (0) or right (1)
+        (tmp_path / f"c{side}.inp").write_text("\n".join(text) + "\n 0 MODULE\n")
+        (case,) = rc.run(tmp_path / f"c{side}.inp", tmp_path)
+        assert case["side"] == ("left" if side == 0 else "right")
+        rail, wheel = rc.plot.placed_profiles(case)
+        y, z = case["patches"][0]["reference_tr"][1:]
+        # The contact reference point lies on both placed surfaces, within the approach of the
+        # bodies (pen ~ 0.03 mm) and the profiles' point spacing.
+        for surf in (rail, wheel):
+            order = np.argsort(surf[0])
+            assert abs(np.interp(y, surf[0][order], surf[1][order]) - z) < 0.1
+        ax = rc.plot.wheelrail(case)
+        ax.figure.savefig(tmp_path / f"wr{side}.png", dpi=80)
+        assert (tmp_path / f"wr{side}.png").stat().st_size > 5000

@@ -27,6 +27,49 @@ py::array_t<double> coordinates(int n, double first_centre, double step) {
   return a;
 }
 
+/// The subsurface blocks: coordinate lists [mm] and fields of shape (nz, ny, nx) [mm, N/mm²].
+py::list subsurface_to_list(std::vector<SubsurfaceResult>& blocks, py::handle owner) {
+  py::list out;
+  for (SubsurfaceResult& b : blocks) {
+    py::dict d;
+    d["x"] = b.x;
+    d["y"] = b.y;
+    d["z"] = b.z;
+    const auto nx = static_cast<py::ssize_t>(b.x.size()), ny = static_cast<py::ssize_t>(b.y.size()),
+               nz = static_cast<py::ssize_t>(b.z.size());
+    const auto e = static_cast<py::ssize_t>(sizeof(double));
+    for (auto [name, field] : {std::pair{"ux", &b.ux},
+                               {"uy", &b.uy},
+                               {"uz", &b.uz},
+                               {"sighyd", &b.sighyd},
+                               {"sigvm", &b.sigvm},
+                               {"sigtr", &b.sigtr},
+                               {"sig1", &b.sig1},
+                               {"sig2", &b.sig2},
+                               {"sig3", &b.sig3},
+                               {"sxx", &b.sxx},
+                               {"sxy", &b.sxy},
+                               {"sxz", &b.sxz},
+                               {"syy", &b.syy},
+                               {"syz", &b.syz},
+                               {"szz", &b.szz}})
+      if (field->size() == b.size())
+        d[name] = py::array_t<double>({nz, ny, nx}, {nx * ny * e, nx * e, e}, field->data(), owner);
+    out.append(d);
+  }
+  return out;
+}
+
+py::dict marker(const ProfileMarker& m) {
+  py::dict d;
+  d["y"] = m.position.y;
+  d["z"] = m.position.z;
+  d["x"] = m.position.x;
+  d["roll"] = m.roll_rad;
+  d["yaw"] = m.yaw_rad;
+  return d;
+}
+
 }  // namespace
 
 py::dict solution_to_dict(Solution solution) {
@@ -83,6 +126,7 @@ py::dict solution_to_dict(Solution solution) {
     for (int ix = 0; ix < g.mx; ++ix)
       sv(iy, ix) = s.state.empty() ? 0 : static_cast<std::int8_t>(s.state[g.index(ix, iy)]);
   d["state"] = state;  // 0 exterior, 1 adhesion, 2 slip, 3 plastic
+  d["subsurface"] = subsurface_to_list(s.subsurface, owner);
   return d;
 }
 
@@ -96,6 +140,12 @@ py::dict wheelrail_to_dict(WheelRailSolution solution) {
   d["force_ws"] =
       std::vector<double>{solution.force_ws.x, solution.force_ws.y, solution.force_ws.z};
   d["z_ws"] = solution.z_ws_mm;
+  d["moment_tr"] =
+      std::vector<double>{solution.moment_tr.x, solution.moment_tr.y, solution.moment_tr.z};
+  d["moment_ws"] =
+      std::vector<double>{solution.moment_ws.x, solution.moment_ws.y, solution.moment_ws.z};
+  d["rail_marker"] = marker(solution.rail_marker_tr);
+  d["wheel_marker"] = marker(solution.wheel_marker_tr);
   py::list patches;
   for (WheelRailPatch& w : solution.patches) {
     py::dict p = solution_to_dict(std::move(w.solution));

@@ -9,11 +9,13 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
 #include "batch/run_input.hpp"
 #include "bindings/python/py_convert.hpp"
+#include "format/inp/inp_reader.hpp"
 #include "format/toml/toml_case_reader.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/solve.hpp"
@@ -41,6 +43,31 @@ py::dict outcome_to_dict(batch::CaseOutcome& o) {
   return d;
 }
 
+py::dict profile_points(const Profile& p) {
+  py::dict d;
+  d["y"] = p.y;
+  d["z"] = p.z;
+  return d;
+}
+
+/// Module-1 cases get their side and the rail and wheel profiles as read (profile coordinates,
+/// mm, z down), for plots in track coordinates with the markers of the solution.
+void attach_profiles(const std::filesystem::path& path, const batch::RunResult& r,
+                     py::list& cases) {
+  const bool any = std::any_of(r.cases.begin(), r.cases.end(),
+                               [](const auto& o) { return o.wheel_rail && o.solved; });
+  if (!any || path.extension() == ".toml") return;
+  const std::vector<format::InputCase> inputs = format::read_input_cases(path);
+  for (std::size_t k = 0; k < inputs.size() && k < r.cases.size(); ++k) {
+    const auto* w = std::get_if<format::WheelRailRecord>(&inputs[k]);
+    if (w == nullptr || !r.cases[k].solved) continue;
+    py::dict d = cases[k];
+    d["side"] = w->is_left() ? "left" : "right";
+    d["rail_profile"] = profile_points(w->rail.profile);
+    d["wheel_profile"] = profile_points(w->wheel.profile);
+  }
+}
+
 /// Runs an input file as `rollcontact run` does (reports next to it or in `output_dir`).
 py::list run_file(const std::filesystem::path& path, const std::filesystem::path& output_dir) {
   batch::RunOptions options;
@@ -52,6 +79,7 @@ py::list run_file(const std::filesystem::path& path, const std::filesystem::path
   }
   py::list cases;
   for (auto& o : r.cases) cases.append(outcome_to_dict(o));
+  attach_profiles(path, r, cases);
   return cases;
 }
 
