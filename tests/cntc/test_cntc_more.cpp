@@ -263,6 +263,23 @@ TEST(CntcWheelRail, MomentsAndMarkersFollowTheForcesAndMirrorBetweenWheels) {
   EXPECT_NEAR(loc[0][25], -loc[1][25], 1e-9);    // rail marker y
   EXPECT_NEAR(loc[0][21], -loc[1][21], 1e-9);    // wheel marker y
   EXPECT_NEAR(g[1][1], 36.24, 0.1);
+
+  // getprofilevalues task 2: the placed rail surface passes through the contact point.
+  int ire = centred_wheel(49, 1, dir), task = 2, nints = 2, iparam[] = {0, 1}, nreals = 1;
+  double ds[] = {0.2};
+  int lenarr = 4000;
+  std::vector<double> v(4000, 0.0);
+  int task0 = 0;
+  cntc_getprofilevalues(&ire, &task0, &nints, iparam, &nreals, ds, &lenarr, v.data());
+  const int n = static_cast<int>(v[0]);
+  ASSERT_GT(n, 100);
+  ASSERT_LE(2 * n, lenarr);
+  cntc_getprofilevalues(&ire, &task, &nints, iparam, &nreals, ds, &lenarr, v.data());
+  double best = 1e30;
+  for (int k = 0; k < n; ++k)
+    best = std::min(best, std::hypot(v[k] - loc[1][1], v[n + k] - loc[1][2]));
+  EXPECT_LT(best, 0.15);  // within the 0.2 mm sampling and the approach of the bodies
+  cntc_finalize(&ire);
 }
 
 }  // namespace

@@ -82,9 +82,18 @@ CNTC_EXPORT void cntc_getprofilevalues(int* ire, int* itask, int* nints, int* ip
   };
   if (*itask == -1) return put({missing ? -32.0 : 0.0, missing ? 1.0 : 0.0}, 0);
   if (missing) return put({-32.0}, 0);
-  if (*itask < 0 || *itask > 9 || *itask == 2 || *itask == 3 || *itask >= 6) {
+  if (*itask >= 6 && *itask <= 8) {  // slices exist for variable profiles only (§2.5)
     library().log(
-        fmt::format("{}: task {} not available yet (served: -1, 0, 1, 4, 5)", name, *itask));
+        fmt::format("{}: task {} needs a variable profile; this one is not", name, *itask));
+    return;
+  }
+  if (*itask < 0 || *itask > 9 || *itask == 3 || *itask == 9) {
+    library().log(
+        fmt::format("{}: task {} not available yet (served: -1, 0, 1, 2, 4, 5)", name, *itask));
+    return;
+  }
+  if (*itask == 2 && !p->result) {
+    library().log(fmt::format("{}: task 2 (track coordinates) needs a calculation first", name));
     return;
   }
   try {
@@ -97,6 +106,19 @@ CNTC_EXPORT void cntc_getprofilevalues(int* ire, int* itask, int* nints, int* ip
       case 1:  // own coordinates, mm (not scaled)
         put(s.y, 0);
         return put(s.z, n);
+      case 2: {  // track coordinates with the last calculation's markers, z down (mm)
+        const ProfileMarker& m = wheel ? p->result->wheel_marker_tr : p->result->rail_marker_tr;
+        const double side = p->record.is_left() ? -1.0 : 1.0, a = m.roll_rad;
+        const double stretch = wheel ? std::cos(m.yaw_rad) : 1.0;
+        std::vector<double> y(s.y.size()), z(s.z.size());
+        for (std::size_t k = 0; k < y.size(); ++k) {
+          const double yp = side * s.y[k] * stretch, zp = s.z[k];
+          y[k] = m.position.y + std::cos(a) * yp - std::sin(a) * zp;
+          z[k] = m.position.z + std::sin(a) * yp + std::cos(a) * zp;
+        }
+        put(y, 0);
+        return put(z, n);
+      }
       case 4:
         return put(s.s, 0);
       default:  // 5: surface angle atan2(dz, dy) [rad]
