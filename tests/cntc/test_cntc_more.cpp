@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -279,6 +280,47 @@ TEST(CntcWheelRail, MomentsAndMarkersFollowTheForcesAndMirrorBetweenWheels) {
   for (int k = 0; k < n; ++k)
     best = std::min(best, std::hypot(v[k] - loc[1][1], v[n + k] - loc[1][2]));
   EXPECT_LT(best, 0.15);  // within the 0.2 mm sampling and the approach of the bodies
+  // Task 3: the gauge point lies at half the gauge (1435/2 mm), GAUGHT = 14 mm below the top,
+  // on the placed rail.
+  std::vector<double> placed(v.begin(), v.begin() + 2 * n);
+  int task3 = 3;
+  std::vector<double> gauge(6, 0.0);
+  int six = 6;
+  cntc_getprofilevalues(&ire, &task3, &nints, iparam, &nreals, ds, &six, gauge.data());
+  EXPECT_DOUBLE_EQ(gauge[4], 717.5);
+  EXPECT_DOUBLE_EQ(gauge[5], 14.0);
+  double nearest = 1e30;
+  for (int k = 0; k < n; ++k)
+    nearest = std::min(nearest, std::hypot(placed[k] - gauge[4], placed[n + k] - gauge[5]));
+  EXPECT_LT(nearest, 0.15);
+  EXPECT_NEAR(gauge[0] + gauge[2], gauge[4], 1e-9);  // rail not rolled: offsets add up
+
+  // Subsurface stresses of a wheel/rail patch: common blocks (icp = -1) or the patch's own.
+  int minus1 = -1, one = 1, iblk = 1, isubs = 9, nx = 1, ny = 1, nz = 8, ierror = -1;
+  double x0[] = {0.0}, y0[] = {0.0}, zs[] = {0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 9.0};
+  subs_addblock(&ire, &minus1, &iblk, &isubs, &nx, &ny, &nz, x0, y0, zs);
+  subs_calculate(&ire, &minus1, &ierror);
+  ASSERT_EQ(ierror, 0);
+  int bx = 0, by = 0, bz = 0;
+  subs_getblocksize(&ire, &one, &iblk, &bx, &by, &bz);
+  EXPECT_EQ(bx * by * bz, 8);
+  int rows = 8, ncol = 1, vm = 8;
+  double sigvm[8] = {};
+  subs_getresults(&ire, &one, &iblk, &rows, &ncol, &vm, sigvm);
+  double pmax = 0.0;
+  cntc_getmaximumpressure(&ire, &one, &pmax);
+  // Below the centre of a near-Hertzian patch the von Mises stress rises from the surface to
+  // an interior maximum of about 0.55-0.62 p0 (Johnson, ch. 3.4) and decays below it.
+  const double peak = *std::max_element(std::begin(sigvm), std::end(sigvm));
+  EXPECT_GT(peak, 0.50 * pmax);
+  EXPECT_LT(peak, 0.65 * pmax);
+  EXPECT_LT(sigvm[0], peak);
+  EXPECT_LT(sigvm[7], peak);
+  int two = 2;
+  subs_addblock(&ire, &one, &iblk, &isubs, &nx, &ny, &two, x0, y0, zs);  // patch 1's own
+  subs_calculate(&ire, &minus1, &ierror);
+  subs_getblocksize(&ire, &one, &iblk, &bx, &by, &bz);
+  EXPECT_EQ(bz, 2);
   cntc_finalize(&ire);
 }
 

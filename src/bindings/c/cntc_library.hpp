@@ -65,6 +65,8 @@ struct Module1Problem {
   WheelsetSolver solver;
   std::optional<WheelRailSolution> result;
   std::vector<model::SubsurfaceBlock> subs_blocks;  ///< subs_addblock (all patches)
+  /// subs_addblock with a patch number: that patch's own blocks (instead of the common ones).
+  std::map<int, std::vector<model::SubsurfaceBlock>> patch_subs_blocks;
   /// subs_calculate: per patch (index icp − 1), one result per block.
   std::vector<std::vector<SubsurfaceResult>> subs_results;
   std::array<double, 9> metadata{};

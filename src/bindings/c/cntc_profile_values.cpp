@@ -87,18 +87,39 @@ CNTC_EXPORT void cntc_getprofilevalues(int* ire, int* itask, int* nints, int* ip
         fmt::format("{}: task {} needs a variable profile; this one is not", name, *itask));
     return;
   }
-  if (*itask < 0 || *itask > 9 || *itask == 3 || *itask == 9) {
-    library().log(
-        fmt::format("{}: task {} not available yet (served: -1, 0, 1, 2, 4, 5)", name, *itask));
+  if (*itask < 0 || *itask > 9) {
+    library().log(fmt::format("{}: task {} not available (-1 to 9)", name, *itask));
     return;
   }
-  if (*itask == 2 && !p->result) {
-    library().log(fmt::format("{}: task 2 (track coordinates) needs a calculation first", name));
+  if ((*itask == 2 || *itask == 3) && !p->result) {
+    library().log(
+        fmt::format("{}: task {} (track coordinates) needs a calculation first", name, *itask));
     return;
+  }
+  if (*itask == 3) {
+    if (wheel) return put({-32.0}, 0);
+    // [ygauge1, zgauge1] the gauge point in rail-profile coordinates, [yoffs, zoffs] the
+    // profile's origin in the track, [ygauge2, zgauge2] the gauge point in the track [L]. The
+    // placement puts the gauge point GAUGHT below the rail top at half the gauge (physics.md
+    // §13.2); without a gauge height (GAUGHT <= 0) the gauge values are 0.
+    const format::WheelRailRecord& r = p->record;
+    const ProfileMarker& m = p->result->rail_marker_tr;
+    const double side = r.is_left() ? -1.0 : 1.0, len = p->units.length;
+    std::vector<double> out = {0.0, 0.0, m.position.y / len, m.position.z / len, 0.0, 0.0};
+    if (r.track.gaught > 0.0) {
+      const double yt = side * (0.5 * r.track.gaugwd + r.rail_deviations.dy);
+      const double zt = r.track.gaught + r.rail_deviations.dz;
+      const double dy = yt - m.position.y, dz = zt - m.position.z, a = m.roll_rad;
+      out[0] = side * (std::cos(a) * dy + std::sin(a) * dz) / len;
+      out[1] = (-std::sin(a) * dy + std::cos(a) * dz) / len;
+      out[4] = yt / len;
+      out[5] = zt / len;
+    }
+    return put(out, 0);
   }
   try {
     const wheelrail::ProfileCurve curve(format::to_wheelrail_profile(spec), !wheel);
-    const Samples s = sample(curve, spec.profile, isampl, ds_out);
+    const Samples s = sample(curve, spec.profile, *itask == 9 ? 0 : isampl, ds_out);
     const int n = static_cast<int>(s.y.size());
     switch (*itask) {
       case 0:
@@ -121,6 +142,10 @@ CNTC_EXPORT void cntc_getprofilevalues(int* ire, int* itask, int* nints, int* ip
       }
       case 4:
         return put(s.s, 0);
+      case 9:  // the curve's nodes: s, y, z (the spline data, for debugging)
+        put(s.s, 0);
+        put(s.y, n);
+        return put(s.z, 2 * n);
       default:  // 5: surface angle atan2(dz, dy) [rad]
         return put(s.angle, 0);
     }

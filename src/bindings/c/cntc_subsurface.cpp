@@ -97,9 +97,10 @@ CNTC_EXPORT void subs_addblock(int* ire, int* icp, int* iblk, int* isubs, int* n
   if (!t) return;
   if (iblk == nullptr || isubs == nullptr || nx == nullptr || ny == nullptr || nz == nullptr)
     return reject(name, "null argument");
-  if (t.m1 != nullptr && t.icp != -1)
-    return reject(name, "blocks for one wheel/rail patch: not yet (use icp = -1, all patches)");
-  auto& blocks = t.m3 != nullptr ? t.m3->subs_blocks : t.m1->subs_blocks;
+  // Module 1: icp = -1 sets the blocks of every patch, a patch number that patch's own.
+  auto& blocks = t.m3 != nullptr ? t.m3->subs_blocks
+                 : t.icp == -1   ? t.m1->subs_blocks
+                                 : t.m1->patch_subs_blocks[t.icp];
   const int nblock = static_cast<int>(blocks.size());
   if (*iblk < 0 || *iblk > std::min(kMaxBlocks, nblock + 1))
     return reject(name,
@@ -130,9 +131,12 @@ CNTC_EXPORT void subs_calculate(int* ire, int* icp, int* ierror) {
     } else if (t.m1 != nullptr && t.m1->result) {
       const model::Bodies bodies = format::to_wheelrail_problem(t.m1->record).patch.bodies;
       t.m1->subs_results.clear();
-      for (const WheelRailPatch& w : t.m1->result->patches)
-        t.m1->subs_results.push_back(
-            post::compute_subsurface(t.m1->subs_blocks, bodies, w.solution));
+      const auto& patches = t.m1->result->patches;
+      for (std::size_t k = 0; k < patches.size(); ++k) {
+        const auto own = t.m1->patch_subs_blocks.find(static_cast<int>(k) + 1);
+        const auto& blocks = own != t.m1->patch_subs_blocks.end() ? own->second : t.m1->subs_blocks;
+        t.m1->subs_results.push_back(post::compute_subsurface(blocks, bodies, patches[k].solution));
+      }
     } else if (t) {
       library().log("subs_calculate: no solution yet (call cntc_calculate first)");
       code = CNTC_err_other;
