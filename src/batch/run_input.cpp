@@ -133,6 +133,8 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
     }
     if (outcome.solved && outcome.wheel_rail) {
       format::write_wheelrail_case_report(report, *m1, identity, outcome.wheelrail);
+      if (m1->digits.a >= 1)
+        format::write_wheelrail_mat_files(output_stem, *m1, identity, outcome.wheelrail);
       cases.push_back(format::wheelrail_case_to_json(identity, outcome.wheelrail));
     } else if (outcome.solved) {
       format::write_case_report(report, *m3, outcome.solution);

@@ -172,7 +172,10 @@ double at(const std::vector<double>& v, std::size_t i) {
 
 }  // namespace
 
-std::string mat_file_text(const CaseRecord& problem, const Solution& solution) {
+std::string mat_file_text(const CaseRecord& problem, const Solution& solution,
+                          const MatWheelRailContext* wheel_rail) {
+  const MatWheelRailContext none;
+  const MatWheelRailContext& wr = wheel_rail != nullptr ? *wheel_rail : none;
   const ControlDigits& d = problem.digits;
   const Grid& grid = solution.grid;
   const EffectiveKinematics ek = effective_kinematics(problem, solution);
@@ -193,7 +196,8 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution) {
                              {"RNOM_ROL", 6}}),
                       ncol - 8, "FMT") +
          "\n";
-  out += zeros(7);
+  for (const double v : {0.0, wr.s_ws, wr.pitch_ws, wr.y_r, wr.z_r, wr.roll_r, wr.rnom_rol})
+    out += g14(v);
   for (int j = 8; j <= ncol - 1; ++j) out += i6x8(0);
   out += fortran_i(kMatFormatVersion, 6) + "\n";
   out += comment_line(names({{"%  X_W(TR)", 7},
@@ -204,7 +208,8 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution) {
                              {"RNOM_WHL", 6}}),
                       ncol - 7) +
          "\n";
-  out += zeros(6) + zeros(ncol - 6) + "\n";
+  for (const double v : {wr.x_w, wr.y_w, wr.z_w, wr.roll_w, wr.yaw_w, wr.rnom_whl}) out += g14(v);
+  out += zeros(ncol - 6) + "\n";
   // 2: contact reference position (module 3: zeros), patch numbers, spin centre.
   out += comment_line(names({{"%  X_CP(R)", 7},
                              {"Y_CP(R)", 7},
@@ -219,7 +224,10 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution) {
                              {"SPINYO", 8}}),
                       ncol - 9) +
          "\n";
-  out += zeros(7) + i6x8(0) + i6x8(0) + g14(problem.kinematics.spinxo) +
+  for (const double v :
+       {wr.x_cp_r, wr.y_cp_r, wr.z_cp_r, wr.delt_cp_r, wr.x_cp_w, wr.y_cp_w, wr.z_cp_w})
+    out += g14(v);
+  out += i6x8(wr.npatch) + i6x8(wr.ipatch) + g14(problem.kinematics.spinxo) +
          g14(problem.kinematics.spinyo) + zeros(ncol - 11) + "\n";
   // 3: grid. C1 is the (ignored) configuration digit of module 3, 0; the module-1 D digit keeps
   // CONTACT's initial value 2 in module 3.
@@ -236,8 +244,10 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution) {
                              {"YNOM_WHL", 5}}),
                       ncol - 11) +
          "\n";
-  out += two_ints(grid.mx, grid.my) + g14(grid.xl) + g14(grid.yl) + g14(grid.dx) + g14(grid.dy) +
-         g14(ek.chi) + g14(ek.dq) + i6x8(0) + i6x8(2) + g14(0.0) + zeros(ncol - 11) + "\n";
+  const double yl = wr.left ? -(grid.yl + grid.my * grid.dy) : grid.yl;
+  out += two_ints(grid.mx, grid.my) + g14(grid.xl) + g14(yl) + g14(grid.dx) + g14(grid.dy) +
+         g14(ek.chi) + g14(ek.dq) + i6x8(wr.c1) + i6x8(wr.d) + g14(wr.ynom_whl) + zeros(ncol - 11) +
+         "\n";
   // 4, 5: material and friction parameters.
   material_lines(out, problem, ncol);
   friction_lines(out, problem, ek.veloc, ncol);
@@ -247,16 +257,20 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution) {
   out += header + "\n";
 
   const bool all = d.a >= 2;
+  const double lateral = wr.left ? -1.0 : 1.0;  // PY, UY of a left wheel's mirrored fields
   for (int iy = 0; iy < grid.my; ++iy) {
+    const int source_iy = wr.left ? grid.my - 1 - iy : iy;
     for (int ix = 0; ix < grid.mx; ++ix) {
-      const std::size_t i = grid.index(ix, iy);
+      const std::size_t i = grid.index(ix, source_iy);
       const auto state = i < solution.state.size() ? solution.state[i] : ElementState::Exterior;
       if (!all && state == ElementState::Exterior) continue;
-      std::string row = two_ints(static_cast<long long>(i) + 1, static_cast<int>(state));
+      std::string row =
+          two_ints(static_cast<long long>(grid.index(ix, iy)) + 1, static_cast<int>(state));
       const double srel = std::hypot(at(solution.sx, i), at(solution.sy, i));
-      for (const double v : {at(solution.h, i), row_friction(problem.friction, iy),
-                             at(solution.pn, i), at(solution.px, i), at(solution.py, i),
-                             at(solution.un, i), at(solution.ux, i), at(solution.uy, i), srel}) {
+      for (const double v :
+           {at(solution.h, i), row_friction(problem.friction, source_iy), at(solution.pn, i),
+            at(solution.px, i), lateral * at(solution.py, i), at(solution.un, i),
+            at(solution.ux, i), lateral * at(solution.uy, i), srel}) {
         row += g14(v);
       }
       // Plasticity and temperature fields are not part of the Solution yet: zero columns keep
@@ -279,6 +293,53 @@ std::filesystem::path write_mat_file(const std::filesystem::path& output_stem,
   const std::filesystem::path path = mat_file_path(output_stem, problem.case_number);
   write_file_atomically(path, mat_file_text(problem, solution));
   return path;
+}
+
+}  // namespace rollcontact::format
+
+namespace rollcontact::format {
+
+std::vector<std::filesystem::path> write_wheelrail_mat_files(
+    const std::filesystem::path& output_stem, const WheelRailRecord& record,
+    const CaseRecord& identity, const WheelRailSolution& solution) {
+  // The patch settings as a module-3 record: digits, material, friction of the case.
+  CaseRecord patch = identity;
+  patch.materials = record.materials;
+  MatWheelRailContext wr;
+  const WheelsetMotion& m = record.motion;
+  wr.s_ws = m.s;
+  wr.pitch_ws = m.pitch;
+  wr.y_r = solution.rail_marker_tr.position.y;
+  wr.z_r = solution.rail_marker_tr.position.z;
+  wr.roll_r = solution.rail_marker_tr.roll_rad;
+  wr.x_w = solution.wheel_marker_tr.position.x;
+  wr.y_w = solution.wheel_marker_tr.position.y;
+  wr.z_w = solution.wheel_marker_tr.position.z;
+  wr.roll_w = solution.wheel_marker_tr.roll_rad;
+  wr.yaw_w = solution.wheel_marker_tr.yaw_rad;
+  wr.rnom_whl = record.wheelset.nomradw;
+  wr.npatch = static_cast<int>(solution.patches.size());
+  wr.c1 = record.config;
+  wr.d = record.discretisation.method;
+  wr.ynom_whl = record.wheelset.ytape;
+  wr.left = record.is_left();
+  std::vector<std::filesystem::path> written;
+  for (std::size_t k = 0; k < solution.patches.size(); ++k) {
+    const WheelRailPatch& w = solution.patches[k];
+    wr.ipatch = static_cast<int>(k) + 1;
+    wr.x_cp_r = w.reference_tr.x;
+    wr.y_cp_r = w.y_rail_mm;
+    wr.z_cp_r = w.z_rail_mm;
+    wr.delt_cp_r = w.delta_rail_rad;
+    wr.x_cp_w = w.reference_wheel.x;
+    wr.y_cp_w = w.reference_wheel.y;
+    wr.z_cp_w = w.reference_wheel.z;
+    std::filesystem::path path = output_stem;
+    path += fmt::format(".{:04d}{}.mat", identity.case_number, static_cast<char>('a' + k % 26));
+    write_file_atomically(path, mat_file_text(patch, w.solution, &wr));
+    written.push_back(path);
+  }
+  return written;
 }
 
 }  // namespace rollcontact::format
