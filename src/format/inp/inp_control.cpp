@@ -42,10 +42,10 @@ namespace {
 GroupValues read_word(InpStream& in, std::string_view name, int max_digits, bool with_second,
                       std::string_view second_name) {
   const GroupValues g = with_second
-                            ? in.read_group({{name, FieldKind::integer},
+                            ? in.read_group({{name, FieldKind::digits},
                                              {second_name, FieldKind::integer, /*optional=*/true}},
                                             "the control words")
-                            : in.read_group({{name, FieldKind::integer}}, "the control words");
+                            : in.read_group({{name, FieldKind::digits}}, "the control words");
   const int value = g.integer(0);
   if (value < 0) {
     in.fail(g.line(0), fmt::format("{} must be a non-negative integer", name),

@@ -85,6 +85,13 @@ std::optional<int> parse_fortran_integer(std::string_view word) {
   return static_cast<int>(value);
 }
 
+std::optional<int> parse_integer_field(std::string_view word) {
+  if (const auto v = parse_fortran_integer(word)) return v;
+  const auto r = parse_fortran_real(word);
+  if (!r || *r != std::round(*r) || *r > INT_MAX || *r < INT_MIN) return std::nullopt;
+  return static_cast<int>(*r);
+}
+
 std::optional<double> parse_fortran_real(std::string_view word) {
   // Validate the grammar ourselves (from_chars would also accept inf/nan/hex forms), then
   // normalise the Fortran exponent letters to 'e' for the conversion.
@@ -110,9 +117,12 @@ std::optional<double> parse_fortran_real(std::string_view word) {
   if (mantissa_digits == 0) return std::nullopt;
   if (i < word.size()) {
     const char e = static_cast<char>(std::tolower(static_cast<unsigned char>(word[i])));
-    if (e != 'e' && e != 'd' && e != 'q') return std::nullopt;
+    // Fortran also reads an exponent written without its letter when it is signed: `.1-07`,
+    // `1.5+03` (a mantissa followed directly by the signed exponent).
+    const bool signed_exponent = e == '+' || e == '-';
+    if (e != 'e' && e != 'd' && e != 'q' && !signed_exponent) return std::nullopt;
     normalised.push_back('e');
-    ++i;
+    if (!signed_exponent) ++i;
     if (i < word.size() && (word[i] == '+' || word[i] == '-')) normalised.push_back(word[i++]);
     std::size_t exponent_digits = 0;
     while (i < word.size() && is_digit(word[i])) {

@@ -43,8 +43,14 @@ InpLineWords split_words(std::string_view text, std::size_t max_words);
 /// `022020` = 22020). Words with a decimal point or exponent, or out of `int` range, give nullopt.
 std::optional<int> parse_fortran_integer(std::string_view word);
 
+/// An integer field as CONTACT reads it: a Fortran integer, or a real with an integral value
+/// (`1.0`, `2.`, `1e1`); `19.5` and values out of `int` range give nullopt.
+std::optional<int> parse_integer_field(std::string_view word);
+
 /// Real in any usual form: `0.35`, `.13333`, `82000.`, `3.5E-1`, `1d-5`, `-0.0009999`, `10000`.
-/// `d`/`D` (and `q`/`Q`) are accepted as exponent letters. inf/nan and trailing text give nullopt.
+/// `d`/`D` (and `q`/`Q`) are accepted as exponent letters, and a signed exponent may follow the
+/// mantissa directly (`.1-07`, `1.5+03`), as Fortran reads it. inf/nan and trailing text give
+/// nullopt.
 std::optional<double> parse_fortran_real(std::string_view word);
 
 /// Angle: a real with optional suffix `d`/`D` (degrees, converted) or `r`/`R` (radians, as is).

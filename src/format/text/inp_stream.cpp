@@ -17,6 +17,7 @@ constexpr std::size_t kInitialReserve = 4096;
 std::string_view kind_name(FieldKind kind) {
   switch (kind) {
     case FieldKind::integer:
+    case FieldKind::digits:
       return "an integer";
     case FieldKind::real:
       return "a real number";
@@ -33,9 +34,11 @@ std::string_view kind_name(FieldKind kind) {
 /// Parses one word into `item`; false if it does not have the field's type.
 bool parse_into(const InpWord& word, FieldKind kind, GroupValues::Item& item) {
   switch (kind) {
-    case FieldKind::integer: {
+    case FieldKind::integer:
+    case FieldKind::digits: {
       if (word.quoted) return false;
-      const auto v = parse_fortran_integer(word.text);
+      const auto v = kind == FieldKind::digits ? parse_fortran_integer(word.text)
+                                               : parse_integer_field(word.text);
       if (!v) return false;
       item.integer = *v;
       item.real = *v;
@@ -234,7 +237,7 @@ std::vector<int> InpStream::read_integers(std::size_t n, std::string_view what) 
   std::vector<int> values;
   values.reserve(std::min<std::size_t>(n, kInitialReserve));
   fill_array(n, what, "an integer", [&](std::size_t, const std::string& word) {
-    const auto v = parse_fortran_integer(word);
+    const auto v = parse_integer_field(word);
     if (!v) return false;
     values.push_back(*v);
     return true;

@@ -13,7 +13,9 @@
 namespace rollcontact::format {
 
 /// Type of one value of a group.
-enum class FieldKind { integer, real, angle, string, logical };
+/// integer: as CONTACT reads integers, integral reals included (`1.0`); digits: a digit-packed
+/// control word, written as an integer only.
+enum class FieldKind { integer, digits, real, angle, string, logical };
 
 /// One field of a group: its name as in the manual (used in messages) and its type. Optional
 /// fields must follow all mandatory ones.

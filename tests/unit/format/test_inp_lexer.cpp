@@ -128,11 +128,27 @@ TEST(InpLexer, RealsInAllUsualForms) {
   EXPECT_DOUBLE_EQ(*parse_fortran_real("+2.5"), 2.5);
   EXPECT_DOUBLE_EQ(*parse_fortran_real("-.5"), -0.5);
   EXPECT_DOUBLE_EQ(*parse_fortran_real("0000.5"), 0.5);
+  // A signed exponent right after the mantissa, as Fortran (and CONTACT) reads it.
+  EXPECT_DOUBLE_EQ(*parse_fortran_real(".1-07"), 1e-8);
+  EXPECT_DOUBLE_EQ(*parse_fortran_real("1.5+03"), 1500.0);
+  EXPECT_DOUBLE_EQ(*parse_fortran_real("1-5"), 1e-5);
+  EXPECT_DOUBLE_EQ(*parse_fortran_real("-2.5-1"), -0.25);
+}
+
+TEST(InpLexer, IntegerFieldsTakeIntegralReals) {
+  EXPECT_EQ(parse_integer_field("1.0"), 1);
+  EXPECT_EQ(parse_integer_field("2."), 2);
+  EXPECT_EQ(parse_integer_field("1e1"), 10);
+  EXPECT_EQ(parse_integer_field("-3.0D0"), -3);
+  EXPECT_EQ(parse_integer_field("022020"), 22020);
+  for (const char* w : {"19.5", "1e-1", "abc", "3e10", ""})
+    EXPECT_FALSE(parse_integer_field(w).has_value()) << w;
 }
 
 TEST(InpLexer, WordsThatAreNotReals) {
-  for (const char* w : {"", ".", "-", "e5", "1e", "1e+", "1.2.3", "inf", "nan", "NaN", "0x10", "1d",
-                        "90d", "3.1416r", "1e5x", "FN,", "abc", "1-5"}) {
+  for (const char* w :
+       {"",     ".",  "-",   "e5",      "1e",   "1e+", "1.2.3", "inf", "nan",  "NaN",
+        "0x10", "1d", "90d", "3.1416r", "1e5x", "FN,", "abc",   "1-",  "1-5x", "1+-5"}) {
     EXPECT_FALSE(parse_fortran_real(w).has_value()) << w;
   }
 }
