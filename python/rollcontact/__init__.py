@@ -45,16 +45,19 @@ class Solver:
     def __init__(self):
         self._core = _CoreSolver()
 
-    def solve(self, case):
-        """Solve one case (a dict as in docs/case-files.md, or TOML text); returns its dict."""
+    def solve(self, case, base_dir="."):
+        """Solve one case (a dict as in docs/case-files.md, or TOML text) and return its dict.
+
+        A case with a "wheel_rail" table is a wheel/rail case (module 1); its profile files are
+        found relative to base_dir."""
         text = case if isinstance(case, str) else to_toml([case])
-        results = self._core.solve_toml(text, "python")
+        results = self._core.solve_toml(text, "python", str(base_dir))
         return results[0] if len(results) == 1 else results
 
 
-def solve(case):
+def solve(case, base_dir="."):
     """Solve one case (dict or TOML text) with a fresh solver; returns the result dict."""
-    return Solver().solve(case)
+    return Solver().solve(case, base_dir)
 
 
 def sweep(case, key, values):

@@ -164,11 +164,7 @@ namespace {
 
 std::vector<format::InputCase> read_problems(const std::filesystem::path& input) {
   // TOML case files (docs/case-files.md) by extension; everything else is CONTACT .inp.
-  if (input.extension() == ".toml") {
-    std::vector<format::InputCase> cases;
-    for (format::CaseRecord& r : format::read_toml_file(input)) cases.emplace_back(std::move(r));
-    return cases;
-  }
+  if (input.extension() == ".toml") return format::read_toml_input_file(input);
   return format::read_input_cases(input);
 }
 

@@ -22,7 +22,7 @@ set(allowed_wheelrail "wheelrail;contact;post;simplified;tangential;physics;norm
 set(allowed_format/text "format/text")
 set(allowed_format/profiles "format/profiles;format/text")
 set(allowed_format/inp "format/inp;format/profiles;format/text")
-set(allowed_format/toml "format/toml;format/inp;format/text")
+set(allowed_format/toml "format/toml;format/inp;format/profiles;format/text")
 set(allowed_format/report "format/report;format/inp;format/text")
 set(allowed_batch "batch;format/text;format/profiles;format/inp;format/toml;format/report;wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 

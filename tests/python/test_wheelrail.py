@@ -57,3 +57,41 @@ def test_placed_profiles_touch_at_the_contact(tmp_path):
         ax = rc.plot.wheelrail(case)
         ax.figure.savefig(tmp_path / f"wr{side}.png", dpi=80)
         assert (tmp_path / f"wr{side}.png").stat().st_size > 5000
+
+
+def test_wheelrail_case_from_a_python_dict(cli, tmp_path):
+    # The benchmark wheel as a dict (docs/case-files.md), solved from Python, and its TOML text
+    # run by the CLI: the same forces; a sweep over the lateral position shifts the contact
+    # towards the flange.
+    if not (EXAMPLES / "mbench_a22_right.inp").exists():
+        pytest.skip("CONTACT examples not found")
+    for name in ("MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"):
+        shutil.copy(EXAMPLES / name, tmp_path)
+    case = {
+        "friction": {"law": "coulomb", "static": 0.3, "kinetic": 0.3},
+        "material": {"body1": {"poisson": 0.28, "shear_modulus_MPa": 82000.0},
+                     "body2": {"poisson": 0.28, "shear_modulus_MPa": 82000.0}},
+        "wheel_rail": {
+            "side": "right",
+            "vertical_force_N": 10000.0,
+            "discretisation": {"element_size_mm": [0.5, 0.5]},
+            "track": {"gauge_height_mm": 14.0, "gauge_width_mm": 1435.0},
+            "rail": {"file": "MBench_UIC60_v3.prr"},
+            "wheelset": {"flange_back_distance_mm": 1360.0, "flange_back_position_mm": -70.0,
+                         "nominal_radius_mm": 460.0},
+            "wheel": {"file": "MBench_S1002_v3.prw"},
+            "position": {"y_mm": 0.0},
+            "velocity": {"forward_mm_per_s": 2000.0, "pitch_rad_per_s": -2000.0 / 460.0},
+        },
+    }
+    r = rc.solve(case, base_dir=tmp_path)
+    assert r["module"] == 1 and r["converged"]
+    assert r["force_tr"][2] == pytest.approx(10000.0, abs=1.0)
+    (tmp_path / "case.toml").write_text(rc.to_toml([case]))
+    subprocess.run([cli, "run", "-q", str(tmp_path / "case.toml")], check=True)
+    ref = json.loads((tmp_path / "case.json").read_text())["cases"][0]
+    assert r["force_tr"] == ref["force_tr"]
+    ys = [rc.set_value(case, "wheel_rail.position.y_mm", y) for y in (0.0, 2.0, 4.0)]
+    solver = rc.Solver()
+    lateral = [solver.solve(c, base_dir=tmp_path)["patches"][0]["reference_tr"][1] for c in ys]
+    assert lateral[0] > lateral[1] > lateral[2]  # the contact moves towards the flange

@@ -16,6 +16,7 @@
 #include "batch/run_input.hpp"
 #include "bindings/python/py_convert.hpp"
 #include "format/inp/inp_reader.hpp"
+#include "format/inp/to_wheelrail.hpp"
 #include "format/toml/toml_case_reader.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/solve.hpp"
@@ -83,28 +84,49 @@ py::list run_file(const std::filesystem::path& path, const std::filesystem::path
   return cases;
 }
 
-/// A solver that keeps its state between cases (operators, sequences): for sweeps.
+/// A solver that keeps its state between cases (operators, sequences, profile curves): for
+/// sweeps. Module-3 cases go to its PatchSolver, wheel/rail cases to its WheelsetSolver.
 class Solver {
  public:
-  /// Solves every [[case]] of `toml` in order; returns one dict per case.
-  py::list solve_toml(const std::string& toml, const std::string& name) {
-    const auto records = format::read_toml_string(toml, name);
+  /// Solves every [[case]] of `toml` in order; returns one dict per case. Relative profile file
+  /// names are resolved against `base_dir`.
+  py::list solve_toml(const std::string& toml, const std::string& name,
+                      const std::filesystem::path& base_dir) {
+    auto cases = format::read_toml_input_string(toml, name, base_dir);
     py::list out;
-    for (const auto& record : records) {
-      Solution s;
-      {
-        py::gil_scoped_release release;
-        s = batch::solve_case(record, solver_);
+    for (auto& c : cases) {
+      py::dict d;
+      if (auto* m3 = std::get_if<format::CaseRecord>(&c)) {
+        Solution s;
+        {
+          py::gil_scoped_release release;
+          s = batch::solve_case(*m3, patch_solver_);
+        }
+        d = python::solution_to_dict(std::move(s));
+        d["case"] = m3->case_number;
+        d["module"] = 3;
+      } else {
+        const auto& w = std::get<format::WheelRailRecord>(c);
+        WheelRailSolution s;
+        {
+          py::gil_scoped_release release;
+          s = wheelset_solver_.solve(format::to_wheelrail_problem(w));
+        }
+        d = python::wheelrail_to_dict(std::move(s));
+        d["case"] = w.case_number;
+        d["module"] = 1;
+        d["side"] = w.is_left() ? "left" : "right";
+        d["rail_profile"] = profile_points(w.rail.profile);
+        d["wheel_profile"] = profile_points(w.wheel.profile);
       }
-      py::dict d = python::solution_to_dict(std::move(s));
-      d["case"] = record.case_number;
       out.append(d);
     }
     return out;
   }
 
  private:
-  PatchSolver solver_;
+  PatchSolver patch_solver_;
+  WheelsetSolver wheelset_solver_;
 };
 
 }  // namespace
@@ -123,5 +145,6 @@ PYBIND11_MODULE(_rollcontact, m) {
                      "sequences between calls.")
       .def(py::init<>())
       .def("solve_toml", &Solver::solve_toml, py::arg("toml"), py::arg("name") = "python",
-           "Solve every [[case]] of the TOML text; one dict per case.");
+           py::arg("base_dir") = std::filesystem::path{},
+           "Solve every [[case]] of the TOML text (module 3 or wheel/rail); one dict per case.");
 }

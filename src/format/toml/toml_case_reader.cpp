@@ -15,6 +15,7 @@
 #include "format/text/input_file.hpp"
 #include "format/toml/toml_sections.hpp"
 #include "format/toml/toml_table.hpp"
+#include "format/toml/toml_wheelrail.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -109,9 +110,9 @@ CaseRecord read_case(Table& c, const Context& ctx, Sequence& seq, const std::str
 
 }  // namespace
 
-std::vector<CaseRecord> read_toml_string(const std::string& text, const std::string& name,
-                                         const std::filesystem::path& base_dir,
-                                         const TomlReadOptions& options) {
+std::vector<InputCase> read_toml_input_string(const std::string& text, const std::string& name,
+                                              const std::filesystem::path& base_dir,
+                                              const TomlReadOptions& options) {
   toml::table root;
   try {
     root = toml::parse(std::string_view(text), std::string_view(name));
@@ -129,10 +130,38 @@ std::vector<CaseRecord> read_toml_string(const std::string& text, const std::str
   if (cases.empty()) top.fail("no [[case]] found");
   const Context ctx{base_dir, options};
   Sequence seq;
-  std::vector<CaseRecord> problems;
+  std::vector<InputCase> problems;
   problems.reserve(cases.size());
-  for (Table& c : cases) problems.push_back(read_case(c, ctx, seq, name));
+  for (Table& c : cases) {
+    if (c.has("wheel_rail")) {
+      const int element = c.integer_in("result_element", 0, 0, 999);
+      problems.emplace_back(read_wheelrail_case(c, ctx, name, ++seq.case_counts[element]));
+    } else {
+      problems.emplace_back(read_case(c, ctx, seq, name));
+    }
+  }
   return problems;
+}
+
+std::vector<InputCase> read_toml_input_file(const std::filesystem::path& path,
+                                            const TomlReadOptions& options) {
+  return read_toml_input_string(read_input_file(path, "input file"), path.string(),
+                                path.parent_path(), options);
+}
+
+std::vector<CaseRecord> read_toml_string(const std::string& text, const std::string& name,
+                                         const std::filesystem::path& base_dir,
+                                         const TomlReadOptions& options) {
+  std::vector<CaseRecord> out;
+  for (InputCase& c : read_toml_input_string(text, name, base_dir, options)) {
+    auto* m3 = std::get_if<CaseRecord>(&c);
+    if (m3 == nullptr)
+      throw InputError(name, std::get<WheelRailRecord>(c).source.first_line,
+                       "a wheel/rail case ([case.wheel_rail]) where only module-3 cases are "
+                       "taken (rollcontact run reads both)");
+    out.push_back(std::move(*m3));
+  }
+  return out;
 }
 
 std::vector<CaseRecord> read_toml_file(const std::filesystem::path& path,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "format/inp/case_record.hpp"
+#include "format/inp/inp_reader.hpp"
 
 namespace rollcontact::format {
 
@@ -28,5 +29,13 @@ std::vector<CaseRecord> read_toml_file(const std::filesystem::path& path,
 std::vector<CaseRecord> read_toml_string(const std::string& text, const std::string& name,
                                          const std::filesystem::path& base_dir = {},
                                          const TomlReadOptions& options = {});
+
+/// Every [[case]] of a TOML case file, module 3 and wheel/rail (module 1: a [case.wheel_rail]
+/// table), in order, with case numbers counted per result element as in .inp files.
+std::vector<InputCase> read_toml_input_string(const std::string& text, const std::string& name,
+                                              const std::filesystem::path& base_dir = {},
+                                              const TomlReadOptions& options = {});
+std::vector<InputCase> read_toml_input_file(const std::filesystem::path& path,
+                                            const TomlReadOptions& options = {});
 
 }  // namespace rollcontact::format

@@ -1,0 +1,243 @@
+// A wheel/rail case (module 1) in a TOML case file: a [[case]] with a [case.wheel_rail] table
+// (docs/case-files.md). The shared sections (solver, friction, material, output, subsurface,
+// heat, damping) are read by the module-3 section readers; the wheel/rail tables here. The
+// result is the WheelRailRecord the .inp reader builds, so both go through the same adapter.
+
+#include "format/toml/toml_wheelrail.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <numbers>
+#include <string>
+
+#include "format/profiles/profile_points.hpp"
+#include "format/profiles/profile_reader.hpp"
+#include "format/text/file_names.hpp"
+#include "format/toml/toml_sections.hpp"
+
+namespace rollcontact::format::toml_input {
+
+namespace {
+
+constexpr std::array<schema::Choice, 4> side_choices{
+    {{0, "left"}, {1, "right"}, {4, "left_roller"}, {5, "right_roller"}}};
+constexpr std::array<schema::Choice, 3> search_choices{
+    {{2, "locus"}, {4, "conformal"}, {5, "brute_force"}}};
+constexpr std::array<schema::Choice, 3> mirror_z_choices{{{0, "auto"}, {-1, "no"}, {1, "yes"}}};
+constexpr std::array<schema::Choice, 3> smoothing_choices{
+    {{0, "spline"}, {1, "weighted_spline"}, {2, "weighted_bspline"}}};
+
+/// A profile table: `file` (relative to the TOML file) or `points = { y_mm, z_mm }`, and the
+/// options of the .inp profile lines.
+ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, const Context& ctx,
+                         std::vector<std::string>& warnings) {
+  Table t = w.table(key);
+  ProfileSpec ps;
+  ps.mirror_y = t.boolean_or("mirror_y", false) ? 1 : 0;
+  ps.mirror_z = t.choice_or("mirror_z", mirror_z_choices, 0);
+  ps.scale_yz = std::max(1e-6, t.real_or("scale", 1.0));
+  ps.smooth = std::max(0.0, t.real_or("smooth", 0.0));
+  ps.ismooth = t.choice_or("smoothing", smoothing_choices, 0);
+  ps.zigthrs = std::max(t.real_or("zigzag_threshold_rad", ps.zigthrs), std::numbers::pi / 4.0);
+  ps.kinkhigh = t.real_or("kink_high_rad", ps.kinkhigh);
+  ps.kinklow = t.real_or("kink_low_rad", ps.kinkhigh / 5.0);
+  ps.kinkwid = t.real_or("kink_window_mm", ps.kinkwid);
+  ps.maxomit = t.real_or("max_omitted", ps.maxomit);
+  if (ps.maxomit < 0.0 || ps.maxomit > 1.0)
+    t.fail_key("max_omitted", fmt::format("{} outside [0, 1]", ps.maxomit));
+  ProfileOptions options{is_wheel, ps.mirror_y, ps.mirror_z, ps.scale_yz};
+  const auto file = t.opt_text("file");
+  auto points = t.opt_table("points");
+  if (file.has_value() == points.has_value())
+    t.fail("give the profile as file = \"...\" or as points = { y_mm = [...], z_mm = [...] }");
+  if (file) {
+    ps.file = *file;
+    const std::filesystem::path path = resolve_input_name(ctx.base_dir, *file);
+    ps.path = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      t.fail_key("file", fmt::format("profile file '{}' not found", *file));
+    if (profile_format_of(path) == ProfileFormat::Slices)
+      t.fail_key("file", "variable profiles (slices files) are not supported in TOML yet");
+    ps.profile = read_profile_file(path, options, warnings);
+  } else {
+    RawProfile raw;
+    raw.file = t.key_path("points");
+    raw.y = points->reals("y_mm");
+    raw.z = points->reals("z_mm");
+    if (raw.y.size() != raw.z.size() || raw.y.size() < 2)
+      points->fail("y_mm and z_mm need the same number (at least 2) of values");
+    points->finish();
+    ps.file = raw.file;
+    ps.profile = finish_profile(raw, options, warnings);
+  }
+  const double chord = profile_chord_length(ps.profile);
+  if (!(chord >= kMinProfileLength_mm && chord <= kMaxProfileLength_mm))
+    t.fail(
+        fmt::format("the {} profile has a length of {:.6g} mm, outside 5..500 mm (check scale "
+                    "= {} or the file's units)",
+                    is_wheel ? "wheel" : "rail", chord, ps.scale_yz));
+  t.finish();
+  return ps;
+}
+
+void read_discretisation(Table& w, WheelRailRecord& r) {
+  Table t = w.table("discretisation");
+  WheelRailDiscretisation& d = r.discretisation;
+  const std::vector<double> size = t.reals("element_size_mm", 2);
+  d.dx = size[0];
+  d.ds = size[1];
+  if (!(d.dx >= 1e-8 && d.ds >= 1e-8)) t.fail_key("element_size_mm", "must be positive");
+  d.method = t.choice_or("search", search_choices, 2);
+  d.dqrel = t.real_or("step_rel", 1.0);
+  if (d.dqrel < 5e-7 || d.dqrel > 10.0)
+    t.fail_key("step_rel", fmt::format("{} outside [5e-7, 10]", d.dqrel));
+  d.a_sep = std::max(0.0, t.real_or("separation_angle_rad", std::numbers::pi / 2.0));
+  d.d_sep = std::max(0.0, t.real_or("separation_mm", 8.0));
+  d.d_comb = std::max(0.0, t.real_or("combination_mm", 4.0));
+  if (d.d_comb > d.d_sep) t.fail_key("combination_mm", "must not exceed separation_mm");
+  d.d_turn = t.real_or("turning_mm", 2.0 * d.d_sep - d.d_comb);
+  d.g_miss = t.real_or("near_miss_mm", -1.0);
+  r.npot_max = t.integer_in("max_elements", r.npot_max, 100, 1000000);
+  t.finish();
+}
+
+void read_track(Table& w, WheelRailRecord& r) {
+  Table t = w.table("track");
+  TrackDimensions& k = r.track;
+  const auto height = t.opt_real("gauge_height_mm");
+  const auto origin = t.opt_reals("rail_origin_mm", 2);
+  if (height.has_value() == origin.has_value())
+    t.fail("give gauge_height_mm (with gauge_width_mm) or rail_origin_mm = [y, z]");
+  if (height) {
+    k.gaught = *height;
+    if (!(k.gaught > 0.0)) t.fail_key("gauge_height_mm", "must be positive");
+    k.gaugwd = t.real("gauge_width_mm");
+  } else {
+    k.gaught = 0.0;
+    k.raily0 = (*origin)[0];
+    k.railz0 = (*origin)[1];
+    t.forbid("gauge_width_mm", "with gauge_height_mm only");
+  }
+  k.cant = t.real_or("cant_rad", 0.0);
+  k.curv = t.real_or("curvature_per_mm", 0.0);
+  k.nomradr = t.real_or("roller_radius_mm", 0.0);
+  t.finish();
+  if (auto dev = w.opt_table("rail_deviations")) {
+    RailDeviations& d = r.rail_deviations;
+    d.dy = dev->real_or("dy_mm", 0.0);
+    d.dz = dev->real_or("dz_mm", 0.0);
+    d.droll = dev->real_or("roll_rad", 0.0);
+    d.vy = dev->real_or("vy_mm_per_s", 0.0);
+    d.vz = dev->real_or("vz_mm_per_s", 0.0);
+    d.vroll = dev->real_or("vroll_rad_per_s", 0.0);
+    dev->finish();
+  }
+}
+
+void read_wheelset(Table& w, WheelRailRecord& r) {
+  Table t = w.table("wheelset");
+  WheelsetDimensions& d = r.wheelset;
+  d.fbdist = t.real("flange_back_distance_mm");
+  d.fbpos = t.real("flange_back_position_mm");
+  d.nomradw = std::max(1e-3, t.real("nominal_radius_mm"));
+  d.ytape = t.real_or("tape_circle_y_mm", 1000.0);
+  t.finish();
+}
+
+/// Position, velocity and the vertical loading (force given, or the height z in position).
+void read_motion(Table& w, WheelRailRecord& r) {
+  WheelsetMotion& m = r.motion;
+  Table p = w.table("position");
+  m.s = p.real_or("s_mm", 0.0);
+  m.y = p.real_or("y_mm", 0.0);
+  const auto z = p.opt_real("z_mm");
+  m.roll = p.real_or("roll_rad", 0.0);
+  m.yaw = p.real_or("yaw_rad", 0.0);
+  m.pitch = p.real_or("pitch_rad", 0.0);
+  p.finish();
+  const auto fz = w.opt_real("vertical_force_N");
+  if (fz.has_value() == z.has_value())
+    w.fail("give vertical_force_N (the height is solved for) or position.z_mm, not both");
+  r.digits.n = fz ? 1 : 0;
+  if (fz) {
+    m.fz = *fz;
+    if (!(m.fz > 0.0)) w.fail_key("vertical_force_N", "must be positive");
+  } else {
+    m.z = *z;
+  }
+  Table v = w.table("velocity");
+  m.vs = v.real_or("forward_mm_per_s", 0.0);
+  m.vy = v.real_or("y_mm_per_s", 0.0);
+  m.vz = v.real_or("z_mm_per_s", 0.0);
+  m.vroll = v.real_or("roll_rad_per_s", 0.0);
+  m.vyaw = v.real_or("yaw_rad_per_s", 0.0);
+  m.vpitch = v.real_or("pitch_rad_per_s", 0.0);
+  m.rpitch = v.real_or("roller_pitch_rad_per_s", 0.0);
+  v.finish();
+}
+
+}  // namespace
+
+WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::string& file,
+                                    int case_number) {
+  // The shared sections through the module-3 readers, into a scratch record.
+  CaseRecord shared;
+  shared.source.file = file;
+  read_solver(c, shared);
+  read_friction(c, shared);
+  read_material(c, ctx, shared);
+  read_damping(c, shared);
+  read_heat(c, shared);
+  read_subsurface(c, shared);
+  read_output(c, shared);
+
+  WheelRailRecord r;
+  r.source.file = file;
+  r.source.first_line = c.line();
+  r.case_number = case_number;
+  r.result_element = c.integer_in("result_element", 0, 0, 999);
+  c.forbid("contact_problem", "module 1 finds its contact patches itself");
+  ControlDigits& d = r.digits;
+  d = shared.digits;
+  d.r = c.boolean_or("solve", true) ? 1 : 3;
+  d.p = 2;
+  d.i = 0;
+  d.gapwgt = c.choice_or("gap_weighting", schema::gap_weighting, 0);
+  d.g = shared.solver.method;
+  d.d = 2;
+  d.z = 3;
+  d.e = 3;
+  if (auto t = c.opt_table("tangential")) {
+    d.t = t->choice_or("problem", schema::tangential_problem, 3);
+    t->finish();  // creepages come from the wheelset's motion
+  } else {
+    d.t = 3;
+  }
+  if (auto t = c.opt_table("normal")) {
+    d.b = t->choice_or("method", schema::normal_method, 0);
+    t->finish();  // the load is the wheelset's: wheel_rail.vertical_force_N or position.z_mm
+  }
+  r.solver = shared.solver;
+  r.friction = shared.friction;
+  r.materials = shared.materials;
+  r.damping = shared.damping;
+  r.heat = shared.heat;
+  r.subsurface = shared.subsurface;
+
+  Table w = c.table("wheel_rail");
+  r.config = w.choice_or("side", side_choices, 1);
+  read_discretisation(w, r);
+  read_track(w, r);
+  r.rail = read_profile(w, "rail", false, ctx, r.source.warnings);
+  read_wheelset(w, r);
+  r.wheel = read_profile(w, "wheel", true, ctx, r.source.warnings);
+  read_motion(w, r);
+  w.finish();
+  c.finish();
+  return r;
+}
+
+}  // namespace rollcontact::format::toml_input

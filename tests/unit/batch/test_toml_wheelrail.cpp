@@ -1,0 +1,85 @@
+// Wheel/rail cases in TOML case files (docs/case-files.md): the same WheelRailRecord and the same
+// answer as the .inp route, and errors with file, line and key path.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "batch/run_input.hpp"
+#include "format/toml/toml_case_reader.hpp"
+#include "rollcontact/errors.hpp"
+#include "support/examples.hpp"
+
+namespace rollcontact::batch {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path examples_dir{ROLLCONTACT_EXAMPLES_DIR};
+const fs::path toml_case = fs::path(ROLLCONTACT_TEST_DATA_DIR) / "toml" / "mbench_right_y3.toml";
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const char* f : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
+    fs::copy_file(examples_dir / f, dir / f);
+  return dir;
+}
+
+TEST(TomlWheelRail, SameForcesAsTheInpCase) {
+  REQUIRE_EXAMPLES();
+  const fs::path dir = scratch("rollcontact_toml_wheelrail");
+  fs::copy_file(toml_case, dir / "case.toml");
+  // The .inp twin: case 1 of the benchmark file with the wheelset of its case 7.
+  std::ifstream in(examples_dir / "mbench_a22_right.inp");
+  std::string text, line;
+  for (int n = 1; std::getline(in, line) && n <= 26; ++n) {
+    if (n == 25) line = "  0.0  3.0  10000. -0.00018030 0.0072  0.0";
+    if (n == 26) line = " 2000. 0.0    0.0   0.0        0.0  -4.34515030";
+    text += line + "\n";
+  }
+  std::ofstream(dir / "twin.inp") << text << " 0 MODULE\n";
+  RunOptions options;
+  const RunResult a = run_input_file(dir / "case.toml", options);
+  const RunResult b = run_input_file(dir / "twin.inp", options);
+  ASSERT_TRUE(a.cases.at(0).solved) << a.cases[0].error;
+  ASSERT_TRUE(b.cases.at(0).solved) << b.cases[0].error;
+  const WheelRailSolution& s = a.cases[0].wheelrail;
+  const WheelRailSolution& t = b.cases[0].wheelrail;
+  EXPECT_EQ(s.force_tr.x, t.force_tr.x);
+  EXPECT_EQ(s.force_tr.y, t.force_tr.y);
+  EXPECT_EQ(s.force_tr.z, t.force_tr.z);
+  ASSERT_EQ(s.patches.size(), t.patches.size());
+  EXPECT_EQ(s.patches[0].solution.totals.fn, t.patches[0].solution.totals.fn);
+  fs::remove_all(dir);
+}
+
+TEST(TomlWheelRail, ErrorsNameFileLineAndKey) {
+  REQUIRE_EXAMPLES();
+  const fs::path dir = scratch("rollcontact_toml_wheelrail_errors");
+  std::ifstream in(toml_case);
+  std::stringstream all;
+  all << in.rdbuf();
+  std::string text = all.str();
+  const std::string from = "file = \"MBench_S1002_v3.prw\"";
+  text.replace(text.find(from), from.size(), "file = \"missing.prw\"");
+  std::ofstream(dir / "bad.toml") << text;
+  try {
+    (void)format::read_toml_input_file(dir / "bad.toml");
+    FAIL() << "a missing profile file was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("bad.toml:"), std::string::npos) << m;
+    EXPECT_NE(m.find("case[1].wheel_rail.wheel.file"), std::string::npos) << m;
+    EXPECT_NE(m.find("missing.prw"), std::string::npos) << m;
+  }
+  // Module-3-only readers refuse a wheel/rail case with a clear message.
+  EXPECT_THROW((void)format::read_toml_file(toml_case), InputError);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rollcontact::batch
