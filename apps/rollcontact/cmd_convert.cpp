@@ -10,6 +10,7 @@
 #include "commands.hpp"
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/inp_writer.hpp"
+#include "format/inp/to_wheelrail.hpp"
 #include "format/toml/toml_case_reader.hpp"
 #include "format/toml/toml_case_writer.hpp"
 #include "rollcontact/errors.hpp"
@@ -28,6 +29,10 @@ bool is_toml(const std::filesystem::path& p) {
   return p.extension() == ".toml";
 }
 
+int report(const ConvertSettings& s, const std::filesystem::path& in,
+           const std::filesystem::path& out, std::size_t count,
+           const std::vector<format::CaseRecord>& problems);
+
 int convert(const ConvertSettings& s) {
   const std::filesystem::path in(s.input);
   const std::filesystem::path out(s.output);
@@ -36,16 +41,29 @@ int convert(const ConvertSettings& s) {
                      "convert needs one .toml and one .inp file (e.g. convert case.inp "
                      "case.toml, or convert case.toml case.inp)");
   }
-  const std::vector<format::CaseRecord> problems =
-      is_toml(in) ? format::read_toml_file(in) : format::read_inp_file(in);
-  if (is_toml(out)) {
-    format::write_toml_file(out, problems);
-  } else {
+  if (!is_toml(out)) {
+    // TOML -> .inp: module-3 cases (the .inp writer has no module 1 yet).
+    const std::vector<format::CaseRecord> problems = format::read_toml_file(in);
     format::write_inp_file(out, problems);
+    return report(s, in, out, problems.size(), problems);
   }
+  const std::vector<format::InputCase> cases =
+      is_toml(in) ? format::read_toml_input_file(in) : format::read_input_cases(in);
+  format::write_toml_input_file(out, cases);
+  std::vector<format::CaseRecord> identities;
+  for (const auto& c : cases)
+    identities.push_back(std::holds_alternative<format::CaseRecord>(c)
+                             ? std::get<format::CaseRecord>(c)
+                             : format::identity_record(std::get<format::WheelRailRecord>(c)));
+  return report(s, in, out, cases.size(), identities);
+}
+
+int report(const ConvertSettings& s, const std::filesystem::path& in,
+           const std::filesystem::path& out, std::size_t count,
+           const std::vector<format::CaseRecord>& problems) {
   if (!s.quiet) {
-    fmt::print("converted {} case{} from {} to {}\n", problems.size(),
-               problems.size() == 1 ? "" : "s", in.string(), out.string());
+    fmt::print("converted {} case{} from {} to {}\n", count, count == 1 ? "" : "s", in.string(),
+               out.string());
     // Overrides applied while reading change what the output says; the user should know.
     for (const format::CaseRecord& p : problems)
       for (const std::string& w : p.source.warnings)

@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 #include <string_view>
+#include <variant>
 
 #include "format/text/atomic_file.hpp"
 #include "format/toml/toml_case_schema.hpp"
@@ -97,6 +100,17 @@ class CaseWriter {
     material();
     grid();
     geometry();
+    solver();
+    output();
+    damping();
+    heat();
+    subsurface();
+  }
+
+  /// The sections a wheel/rail case shares with module 3 (its patch settings).
+  void write_shared() {
+    friction();
+    material();
     solver();
     output();
     damping();
@@ -471,19 +485,175 @@ class CaseWriter {
   const std::filesystem::path& base_dir_;
 };
 
+/// Writes one wheel/rail case ([case.wheel_rail], docs/case-files.md).
+class WheelRailWriter {
+ public:
+  WheelRailWriter(std::string& out, const WheelRailRecord& r, const std::filesystem::path& base_dir)
+      : out_(out), r_(r), base_dir_(base_dir) {}
+
+  void write() {
+    const ControlDigits& d = r_.digits;
+    if (r_.variable_friction.v != 0 || r_.has_massless_rail || d.e == 4 || d.e == 5 ||
+        r_.rail.sliced || r_.wheel.sliced)
+      throw Error(
+          fmt::format("case {}: variable friction, the massless rail, flexible wheelsets "
+                      "and variable profiles have no TOML case-file equivalent yet",
+                      r_.case_number));
+    out_ += "\n[[case]]\n";
+    if (!r_.source.file.empty())
+      out_ += fmt::format("# from {} line {} (case {}, module 1)\n", r_.source.file,
+                          r_.source.first_line, r_.case_number);
+    if (r_.result_element != 0) line("result_element", fmt::format("{}", r_.result_element));
+    if (d.r == 2 || d.r == 3) line("solve", "false");
+    if (d.gapwgt != 0) line("gap_weighting", named(schema::gap_weighting, d.gapwgt, "GAPWGT", id_));
+    table("case.tangential");
+    line("problem", named(schema::tangential_problem, d.t, "T", id_));
+    if (d.b != 0) {
+      table("case.normal");
+      line("method", named(schema::normal_method, d.b, "B", id_));
+    }
+    CaseWriter(out_, id_, base_dir_).write_shared();
+    wheel_rail();
+  }
+
+ private:
+  static CaseRecord identity(const WheelRailRecord& r) {
+    CaseRecord p;
+    p.case_number = r.case_number;
+    p.result_element = r.result_element;
+    p.digits = r.digits;
+    p.solver = r.solver;
+    p.friction = r.friction;
+    p.materials = r.materials;
+    p.damping = r.damping;
+    p.heat = r.heat;
+    p.subsurface = r.subsurface;
+    return p;
+  }
+  void line(std::string_view key, const std::string& value) {
+    out_ += fmt::format("{} = {}\n", key, value);
+  }
+  void table(std::string_view name) { out_ += fmt::format("\n[{}]\n", name); }
+
+  void profile(std::string_view key, const ProfileSpec& ps) {
+    table(fmt::format("case.wheel_rail.{}", key));
+    std::error_code ec;
+    const std::filesystem::path rel = base_dir_.empty()
+                                          ? std::filesystem::path(ps.path)
+                                          : std::filesystem::relative(ps.path, base_dir_, ec);
+    line("file",
+         quote((ec || rel.empty() ? std::filesystem::path(ps.path) : rel).generic_string()));
+    if (ps.mirror_y == 1) line("mirror_y", "true");
+    if (ps.mirror_z != 0) line("mirror_z", ps.mirror_z == 1 ? "\"yes\"" : "\"no\"");
+    if (ps.scale_yz != 1.0) line("scale", real(ps.scale_yz));
+    if (ps.smooth != 0.0) line("smooth", real(ps.smooth));
+    static constexpr const char* smoothing[] = {"spline", "weighted_spline", "weighted_bspline"};
+    if (ps.ismooth != 0) line("smoothing", quote(smoothing[std::clamp(ps.ismooth, 0, 2)]));
+    line("zigzag_threshold_rad", real(ps.zigthrs));
+    line("kink_high_rad", real(ps.kinkhigh));
+    line("kink_low_rad", real(ps.kinklow));
+    line("kink_window_mm", real(ps.kinkwid));
+    line("max_omitted", real(ps.maxomit));
+  }
+
+  void wheel_rail() {
+    table("case.wheel_rail");
+    static constexpr std::array<const char*, 6> sides{"\"left\"",        "\"right\"",       "", "",
+                                                      "\"left_roller\"", "\"right_roller\""};
+    line("side", sides[static_cast<std::size_t>(std::clamp(r_.config, 0, 5))]);
+    if (r_.digits.n == 1) line("vertical_force_N", real(r_.motion.fz));
+    const WheelRailDiscretisation& ds = r_.discretisation;
+    table("case.wheel_rail.discretisation");
+    line("element_size_mm", real_array(std::array<double, 2>{ds.dx, ds.ds}));
+    static constexpr const char* search[] = {
+        "", "", "\"locus\"", "", "\"conformal\"", "\"brute_force\""};
+    if (ds.method == 2 || ds.method == 4 || ds.method == 5) line("search", search[ds.method]);
+    line("step_rel", real(ds.dqrel));
+    line("separation_angle_rad", real(ds.a_sep));
+    line("separation_mm", real(ds.d_sep));
+    line("combination_mm", real(ds.d_comb));
+    line("turning_mm", real(ds.d_turn));
+    line("near_miss_mm", real(ds.g_miss));
+    line("max_elements", fmt::format("{}", r_.npot_max));
+    const TrackDimensions& t = r_.track;
+    table("case.wheel_rail.track");
+    if (t.gaught > 0.0) {
+      line("gauge_height_mm", real(t.gaught));
+      line("gauge_width_mm", real(t.gaugwd));
+    } else {
+      line("rail_origin_mm", real_array(std::array<double, 2>{t.raily0, t.railz0}));
+    }
+    line("cant_rad", real(t.cant));
+    line("curvature_per_mm", real(t.curv));
+    if (t.nomradr != 0.0) line("roller_radius_mm", real(t.nomradr));
+    const RailDeviations& dev = r_.rail_deviations;
+    table("case.wheel_rail.rail_deviations");
+    line("dy_mm", real(dev.dy));
+    line("dz_mm", real(dev.dz));
+    line("roll_rad", real(dev.droll));
+    line("vy_mm_per_s", real(dev.vy));
+    line("vz_mm_per_s", real(dev.vz));
+    line("vroll_rad_per_s", real(dev.vroll));
+    profile("rail", r_.rail);
+    const WheelsetDimensions& w = r_.wheelset;
+    table("case.wheel_rail.wheelset");
+    line("flange_back_distance_mm", real(w.fbdist));
+    line("flange_back_position_mm", real(w.fbpos));
+    line("nominal_radius_mm", real(w.nomradw));
+    line("tape_circle_y_mm", real(w.ytape));
+    profile("wheel", r_.wheel);
+    const WheelsetMotion& m = r_.motion;
+    table("case.wheel_rail.position");
+    line("s_mm", real(m.s));
+    line("y_mm", real(m.y));
+    if (r_.digits.n == 0) line("z_mm", real(m.z));
+    line("roll_rad", real(m.roll));
+    line("yaw_rad", real(m.yaw));
+    line("pitch_rad", real(m.pitch));
+    table("case.wheel_rail.velocity");
+    line("forward_mm_per_s", real(m.vs));
+    line("y_mm_per_s", real(m.vy));
+    line("z_mm_per_s", real(m.vz));
+    line("roll_rad_per_s", real(m.vroll));
+    line("yaw_rad_per_s", real(m.vyaw));
+    line("pitch_rad_per_s", real(m.vpitch));
+    if (m.rpitch != 0.0) line("roller_pitch_rad_per_s", real(m.rpitch));
+  }
+
+  std::string& out_;
+  const WheelRailRecord& r_;
+  CaseRecord id_ = identity(r_);
+  const std::filesystem::path& base_dir_;
+};
+
 }  // namespace
 
 std::string write_toml_string(const std::vector<CaseRecord>& problems,
                               const std::filesystem::path& base_dir) {
+  std::vector<InputCase> cases(problems.begin(), problems.end());
+  return write_toml_input_string(cases, base_dir);
+}
+
+std::string write_toml_input_string(const std::vector<InputCase>& cases,
+                                    const std::filesystem::path& base_dir) {
   std::string out =
       "# rollcontact case file (docs/case-files.md). Units: mm, N, N/mm² (MPa), s, rad.\n";
   out += fmt::format("version = {}\n", toml_schema::version);
-  for (const CaseRecord& p : problems) CaseWriter(out, p, base_dir).write();
+  for (const InputCase& c : cases) {
+    if (const auto* p = std::get_if<CaseRecord>(&c))
+      CaseWriter(out, *p, base_dir).write();
+    else
+      WheelRailWriter(out, std::get<WheelRailRecord>(c), base_dir).write();
+  }
   return out;
 }
 
 void write_toml_file(const std::filesystem::path& path, const std::vector<CaseRecord>& problems) {
   write_file_atomically(path, write_toml_string(problems, path.parent_path()));
+}
+
+void write_toml_input_file(const std::filesystem::path& path, const std::vector<InputCase>& cases) {
+  write_file_atomically(path, write_toml_input_string(cases, path.parent_path()));
 }
 
 }  // namespace rollcontact::format

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "format/inp/case_record.hpp"
+#include "format/inp/inp_reader.hpp"
 
 namespace rollcontact::format {
 
@@ -20,5 +21,12 @@ std::string write_toml_string(const std::vector<CaseRecord>& problems,
 
 /// Writes write_toml_string(problems, path's folder) to `path` atomically.
 void write_toml_file(const std::filesystem::path& path, const std::vector<CaseRecord>& problems);
+
+/// The same for cases of both modules; wheel/rail cases become [case.wheel_rail] tables with
+/// their profile files relative to `base_dir`. Throws rollcontact::Error for what the schema
+/// cannot express yet (variable friction, massless rail, flexible wheelsets, slices files).
+std::string write_toml_input_string(const std::vector<InputCase>& cases,
+                                    const std::filesystem::path& base_dir = {});
+void write_toml_input_file(const std::filesystem::path& path, const std::vector<InputCase>& cases);
 
 }  // namespace rollcontact::format

@@ -9,7 +9,9 @@
 #include <string>
 
 #include "batch/run_input.hpp"
+#include "format/inp/to_wheelrail.hpp"
 #include "format/toml/toml_case_reader.hpp"
+#include "format/toml/toml_case_writer.hpp"
 #include "rollcontact/errors.hpp"
 #include "support/examples.hpp"
 
@@ -79,6 +81,27 @@ TEST(TomlWheelRail, ErrorsNameFileLineAndKey) {
   // Module-3-only readers refuse a wheel/rail case with a clear message.
   EXPECT_THROW((void)format::read_toml_file(toml_case), InputError);
   fs::remove_all(dir);
+}
+
+TEST(TomlWheelRail, ConvertedBenchmarkFileGivesTheSameResults) {
+  // .inp -> TOML text -> cases: every case of the benchmark file (keep digits resolved in the
+  // TOML) solves to the same forces, bit for bit.
+  REQUIRE_EXAMPLES();
+  const auto from_inp = format::read_input_cases(examples_dir / "mbench_a22_right.inp");
+  const std::string text = format::write_toml_input_string(from_inp, examples_dir);
+  const auto from_toml = format::read_toml_input_string(text, "converted.toml", examples_dir);
+  ASSERT_EQ(from_toml.size(), from_inp.size());
+  WheelsetSolver a, b;
+  for (std::size_t k = 0; k < from_inp.size(); k += 4) {  // every 4th case: 0 .. 20 mm
+    const auto& wi = std::get<format::WheelRailRecord>(from_inp[k]);
+    const auto& wt = std::get<format::WheelRailRecord>(from_toml[k]);
+    EXPECT_EQ(wt.case_number, wi.case_number);
+    const WheelRailSolution si = a.solve(format::to_wheelrail_problem(wi));
+    const WheelRailSolution st = b.solve(format::to_wheelrail_problem(wt));
+    EXPECT_EQ(st.force_tr.x, si.force_tr.x) << "case " << wi.case_number;
+    EXPECT_EQ(st.force_tr.y, si.force_tr.y) << "case " << wi.case_number;
+    EXPECT_EQ(st.force_tr.z, si.force_tr.z) << "case " << wi.case_number;
+  }
 }
 
 }  // namespace
