@@ -1,7 +1,10 @@
 // `rollcontact run` and `rollcontact example`.
 
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -65,6 +68,7 @@ struct RunSettings {
   std::string backend = "default";
   bool measure = false;
   bool quiet = false;
+  int threads = 1;
 };
 
 int run_job(const std::filesystem::path& input, const RunSettings& settings, bool show_picture) {
@@ -83,6 +87,20 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
     }
     if (count > 20 && (k + 1) % 20 == 0) fmt::print(stderr, "  ... {}/{} cases\n", k + 1, count);
   };
+  options.threads = settings.threads;
+  if (!quiet && isatty(fileno(stderr))) {
+    // A progress line on a terminal while the threads work (not in pipes or with -q).
+    const auto start = std::chrono::steady_clock::now();
+    options.on_progress = [start](std::size_t done, std::size_t count) {
+      const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double rate = s > 0.0 ? static_cast<double>(done) / s : 0.0;
+      const double left = rate > 0.0 ? static_cast<double>(count - done) / rate : 0.0;
+      fmt::print(stderr, "\r  {}/{} cases, {:.1f} cases/s, {:.0f} s left   ", done, count, rate,
+                 left);
+      if (done == count) fmt::print(stderr, "\n");
+    };
+  }
   const auto result = batch::run_input_file(input, options);
   if (!quiet)
     fmt::print("wrote {} and {}\n", result.report_path.string(), result.json_path.string());
@@ -110,6 +128,11 @@ CommandRunner add_run_command(CLI::App& app) {
   cmd->add_option("-o,--output-dir", settings->output_dir,
                   "folder for the outputs (default: next to FILE)");
   add_solver_options(cmd, *settings);
+  cmd->add_option("-j,--threads", settings->threads,
+                  "worker threads: sequences (result elements) run in parallel, each in its "
+                  "order; the outputs are those of one thread")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   return [settings] { return run_job(settings->input, *settings, false); };
 }
 

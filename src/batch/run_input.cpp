@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <atomic>
 #include <map>
 #include <sstream>
 #include <variant>
 
+#include "batch/parallel.hpp"
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/to_model.hpp"
 #include "format/inp/to_wheelrail.hpp"
@@ -58,8 +60,10 @@ struct RunState {
 CaseOutcome solve_module3(const format::CaseRecord& problem, RunState& state) {
   CaseOutcome outcome;
   outcome.problem = problem;
-  auto [it, inserted] =
-      state.patch_solvers.try_emplace(problem.result_element, state.options.solve);
+  // find() first: with threads the solvers exist already and find is safe to call concurrently.
+  auto it = state.patch_solvers.find(problem.result_element);
+  if (it == state.patch_solvers.end())
+    it = state.patch_solvers.try_emplace(problem.result_element, state.options.solve).first;
   try {
     if (!problem.source.case_error.empty()) throw ProblemError(problem.source.case_error);
     outcome.solution = solve_case(problem, it->second);
@@ -80,8 +84,9 @@ CaseOutcome solve_module1(const format::WheelRailRecord& record, RunState& state
   CaseOutcome outcome;
   outcome.problem = format::identity_record(record);
   outcome.wheel_rail = true;
-  auto [it, inserted] =
-      state.wheelset_solvers.try_emplace(record.result_element, state.options.solve);
+  auto it = state.wheelset_solvers.find(record.result_element);
+  if (it == state.wheelset_solvers.end())
+    it = state.wheelset_solvers.try_emplace(record.result_element, state.options.solve).first;
   try {
     if (!record.source.case_error.empty()) throw ProblemError(record.source.case_error);
     const model::WheelRailProblem problem = format::to_wheelrail_problem(record);
@@ -101,6 +106,70 @@ CaseOutcome solve_module1(const format::WheelRailRecord& record, RunState& state
 
 }  // namespace
 
+namespace {
+
+/// Solves case k (or marks it skipped), with the error naming file and line.
+CaseOutcome solve_one(const format::InputCase& problem, RunState& state) {
+  const auto* m3 = std::get_if<format::CaseRecord>(&problem);
+  const auto* m1 = std::get_if<format::WheelRailRecord>(&problem);
+  const format::CaseRecord identity = m3 ? *m3 : format::identity_record(*m1);
+  CaseOutcome outcome;
+  if (identity.digits.r == 2 || identity.digits.r == 3) {
+    outcome.problem = identity;
+    outcome.wheel_rail = m1 != nullptr;
+    outcome.skipped = true;
+    return outcome;
+  }
+  outcome = m3 ? solve_module3(*m3, state) : solve_module1(*m1, state);
+  if (!outcome.error.empty()) {
+    const format::SourceInfo& src = identity.source;
+    if (!src.file.empty())
+      outcome.error = src.file + ":" + std::to_string(src.first_line) + ": " + outcome.error;
+  }
+  return outcome;
+}
+
+/// The cases solved on `threads` workers: each sequence (module and result element) in its
+/// order on one worker, the sequences in parallel. The solvers are made before the workers
+/// start, so that each worker only touches its own.
+std::vector<CaseOutcome> solve_in_parallel(const std::vector<format::InputCase>& problems,
+                                           RunState& state, const RunOptions& options) {
+  std::map<std::pair<int, int>, std::vector<std::size_t>> sequences;
+  for (std::size_t k = 0; k < problems.size(); ++k) {
+    const auto* m3 = std::get_if<format::CaseRecord>(&problems[k]);
+    const int module = m3 ? 3 : 1;
+    const int element =
+        m3 ? m3->result_element : std::get<format::WheelRailRecord>(problems[k]).result_element;
+    sequences[{module, element}].push_back(k);
+    if (m3)
+      state.patch_solvers.try_emplace(element, options.solve);
+    else
+      state.wheelset_solvers.try_emplace(element, options.solve);
+  }
+  std::vector<std::vector<std::size_t>> groups;
+  for (auto& [key, indices] : sequences) groups.push_back(std::move(indices));
+  std::vector<CaseOutcome> outcomes(problems.size());
+  std::atomic<std::size_t> done{0};
+  ParallelOptions parallel;
+  parallel.threads = options.threads;
+  parallel.schedule = Schedule::Dynamic;
+  std::function<void(std::size_t)> progress;
+  if (options.on_progress)
+    progress = [&](std::size_t) { options.on_progress(done.load(), problems.size()); };
+  parallel_for(
+      groups.size(), parallel,
+      [&](std::size_t, std::size_t g) {
+        for (const std::size_t k : groups[g]) {
+          outcomes[k] = solve_one(problems[k], state);
+          ++done;
+        }
+      },
+      progress);
+  return outcomes;
+}
+
+}  // namespace
+
 RunResult run_problems(const std::vector<format::InputCase>& problems,
                        const std::string& input_name, const std::filesystem::path& output_stem,
                        const RunOptions& options) {
@@ -109,28 +178,18 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
   format::write_report_banner(report);
   nlohmann::json cases = nlohmann::json::array();
   RunState state{options, {}, {}};
+  std::vector<CaseOutcome> solved;
+  if (options.threads > 1) solved = solve_in_parallel(problems, state, options);
 
   for (std::size_t k = 0; k < problems.size(); ++k) {
     const auto* m3 = std::get_if<format::CaseRecord>(&problems[k]);
     const auto* m1 = std::get_if<format::WheelRailRecord>(&problems[k]);
     const format::CaseRecord identity = m3 ? *m3 : format::identity_record(*m1);
-    CaseOutcome outcome;
-    if (identity.digits.r == 2 || identity.digits.r == 3) {
-      outcome.problem = identity;
-      outcome.wheel_rail = m1 != nullptr;
-      outcome.skipped = true;
-    } else {
-      outcome = m3 ? solve_module3(*m3, state) : solve_module1(*m1, state);
-      if (outcome.solved &&
-          !(outcome.wheel_rail ? outcome.wheelrail.converged : outcome.solution.solver.converged))
-        ++result.failed;
-      if (!outcome.error.empty()) {
-        ++result.failed;
-        const format::SourceInfo& src = identity.source;
-        if (!src.file.empty())
-          outcome.error = src.file + ":" + std::to_string(src.first_line) + ": " + outcome.error;
-      }
-    }
+    CaseOutcome outcome = solved.empty() ? solve_one(problems[k], state) : std::move(solved[k]);
+    if (outcome.solved &&
+        !(outcome.wheel_rail ? outcome.wheelrail.converged : outcome.solution.solver.converged))
+      ++result.failed;
+    if (!outcome.error.empty()) ++result.failed;
     if (outcome.solved && outcome.wheel_rail) {
       format::write_wheelrail_case_report(report, *m1, identity, outcome.wheelrail);
       if (m1->digits.a >= 1)

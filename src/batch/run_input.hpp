@@ -30,8 +30,14 @@ struct CaseOutcome {
 struct RunOptions {
   std::filesystem::path output_dir;  ///< empty: next to the input
   SolveOptions solve;
-  /// Called after each case (progress); may be empty.
+  /// Called after each case (progress); may be empty. With threads > 1 it is called in case
+  /// order once the cases are solved.
   std::function<void(const CaseOutcome&, std::size_t index, std::size_t count)> on_case;
+  /// Worker threads: the sequences (one per result element and module) run in parallel, each
+  /// in its order; reports and results are those of a one-thread run, value for value.
+  int threads = 1;
+  /// Called about every 0.2 s with the cases solved so far while threads > 1 work; may be empty.
+  std::function<void(std::size_t done, std::size_t count)> on_progress;
 };
 
 struct RunResult {
