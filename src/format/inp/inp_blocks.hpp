@@ -14,6 +14,11 @@
 
 namespace rollcontact::format {
 
+/// The note a case with the solver digit G=5 (GDsteady, an algorithm choice) gets in its report.
+inline constexpr const char* kGdSteadyNote =
+    "G=5 (GDsteady) is solved with rollcontact's steady-rolling solver (semismooth Newton); its "
+    "parameter line is read and not used";
+
 /// Iteration line `MAXGS MAXIN MAXNR MAXOUT EPS {NPOT_MAX}` and the G-specific line (G=2,3,4,5).
 /// Resets the G-specific parameters to their defaults first; sets solver.method = g. Returns
 /// NPOT_MAX when given (module 1 uses it, module 3 ignores it).

@@ -442,6 +442,7 @@ WheelRailRecord Module1Reader::read_case(InpStream& in, int reid, int module_lin
   if (d.g != 1) {  // lines 5-6 (G=1 keeps them)
     p.npot_max = clamp_npot_max(read_solver_lines(in, d.g, p.solver), p.source.warnings);
   }
+  if (p.solver.method == 5) p.source.warnings.push_back(kGdSteadyNote);
   read_friction_law(c);                  // lines 7-8
   read_materials_damping_heat(c);        // lines 9-12
   if (d.d >= 2) read_discretisation(c);  // line 13

@@ -524,8 +524,9 @@ CaseRecord Module3Reader::read_case(InpStream& in, int reid, int cpid, int modul
   check_digits(c);
 
   if (d.g != 1) read_solver_lines(in, d.g, p.solver);  // lines 5-6 (G=1 keeps them)
-  read_load_line(in, d, p.kinematics);                 // line 7
-  read_friction_law(c);                                // lines 8-9
+  if (p.solver.method == 5) p.source.warnings.push_back(kGdSteadyNote);
+  read_load_line(in, d, p.kinematics);  // line 7
+  read_friction_law(c);                 // lines 8-9
   const bool new_materials = d.c == 2 || d.c == 3 || d.c == 4 || d.c == 9;
   read_rolling_line(c, new_materials);                           // line 10
   if (d.c == 4) read_conformal_line(in, p.materials.conformal);  // line 11

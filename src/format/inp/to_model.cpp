@@ -77,6 +77,7 @@ model::SolverOptions solver_of(const CaseRecord& r) {
   o.max_inner_iterations = s.maxgs;
   o.max_newton_iterations = s.maxnr;
   o.max_normal_tangential_passes = s.maxout;
+  // G=0, 3, 4, 5 (SteadyGS, GDsteady: algorithm choices) are served by the default solver.
   o.tangential_method =
       r.digits.g == 2 ? model::TangentialMethod::ConvexGS : model::TangentialMethod::Default;
   if (r.digits.g == 2 || r.digits.g == 3) {
@@ -103,7 +104,6 @@ void check_supported(const CaseRecord& record) {
   if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
   if (d.t >= 1 && record.friction.law != 0)
     not_supported(fmt::format("friction law L={}", record.friction.law));
-  if (d.g == 5) not_supported("solver GDsteady G=5");
   if (record.potential.ipotcn == -6) not_supported("SDEC potential contact IPOTCN=-6");
 }
 

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "format/inp/grid_extent.hpp"
+#include "format/inp/inp_blocks.hpp"
 #include "format/inp/reader_checks.hpp"
 #include "format/text/input_file.hpp"
 #include "format/toml/toml_sections.hpp"
@@ -43,6 +44,7 @@ CaseRecord read_case(Table& c, const Context& ctx, Sequence& seq, const std::str
 
   read_solver(c, p);
   d.g = p.solver.method;
+  if (p.solver.method == 5) p.source.warnings.push_back(kGdSteadyNote);
   read_normal(c, p);
   read_tangential(c, p);
   read_friction(c, p);

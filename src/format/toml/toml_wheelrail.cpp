@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "format/inp/inp_blocks.hpp"
 #include "format/profiles/profile_points.hpp"
 #include "format/profiles/profile_reader.hpp"
 #include "format/text/file_names.hpp"
@@ -207,6 +208,7 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   d.i = 0;
   d.gapwgt = c.choice_or("gap_weighting", schema::gap_weighting, 0);
   d.g = shared.solver.method;
+  if (shared.solver.method == 5) r.source.warnings.push_back(kGdSteadyNote);
   d.d = 2;
   d.z = 3;
   d.e = 3;

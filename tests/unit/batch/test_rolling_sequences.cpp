@@ -81,3 +81,30 @@ TEST(RollingSequences, GridMovedByWholeElementsCarriesTheTractions) {
 
 }  // namespace
 }  // namespace rollcontact::batch
+
+namespace rollcontact::batch {
+namespace {
+
+TEST(SolverDigits, GdSteadyIsServedByTheSteadySolverWithANote) {
+  // G=5 only chooses an algorithm: the case is solved (with rollcontact's steady-rolling solver)
+  // and says so in its warnings, with the answer of G=0.
+  const std::string head = " 3  MODULE\n  203100\n  022020\n";
+  const std::string tail =
+      "  10000.0  0.001  -0.0005  0.0001\n  0.3  0.3\n  0.0  0.1  2000.0\n"
+      "  0.28 0.28 82000. 82000.\n  -1\n  30 30  0.002  0.004  1.1\n 0  MODULE\n";
+  const auto g0 = format::read_inp_string(head + "  0000301\n  999 100 30 1 1e-5\n" + tail, "g0");
+  const auto g5 = format::read_inp_string(
+      head + "  0500301\n  999 100 30 1 1e-5\n  0.9 0.5 2 0.1 0.2 0.3 0.4 1.5\n" + tail, "g5");
+  PatchSolver s0, s5;
+  const Solution a = solve_case(g0.at(0), s0);
+  const Solution b = solve_case(g5.at(0), s5);
+  ASSERT_TRUE(a.solver.converged && b.solver.converged);
+  EXPECT_EQ(a.totals.fx, b.totals.fx);
+  EXPECT_EQ(a.totals.fy, b.totals.fy);
+  bool noted = false;
+  for (const auto& w : g5.at(0).source.warnings) noted |= w.find("G=5") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
+}  // namespace
+}  // namespace rollcontact::batch
