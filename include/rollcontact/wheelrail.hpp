@@ -41,6 +41,7 @@ struct WheelRailPatch {
   double s_rail_mm = 0, s_wheel_mm = 0;  ///< arc length of the reference along the profiles
   double delta_rail_rad = 0, delta_wheel_rad = 0;  ///< contact angle in rail/wheel-profile frames
   double pressure_centre_x_mm = 0, pressure_centre_y_mm = 0;  ///< centre of pressure (track)
+  model::Friction friction;  ///< the patch's coefficients (they vary with its place for V=1, 2)
   /// The patch as a module-3 problem: FN, FX and FS (= fy), MN (= mz, about the reference point),
   /// approach, pmax, energy, power, fields on the patch grid (x rolling, y along the contact).
   Solution solution;

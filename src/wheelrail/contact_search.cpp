@@ -177,6 +177,30 @@ std::vector<ContactRegion> combine(std::vector<ContactRegion> regions,
   return out;
 }
 
+/// Step 5 for separate neighbours: between D_SEP and D_TURN (and within A_SEP) their reference
+/// angles are turned towards their weight-averaged angle, fully at D_SEP and not at all at
+/// D_TURN, linearly in between (the ramp of the combination factors). CONTACT's exact rule is
+/// not documented: on `mbench_a22_varfric` case 3 this gives δ −0.2521 and −0.2928 rad where
+/// CONTACT prints −0.2480 and −0.2930 (unturned: −0.1326 and −0.2984); docs/decisions.md.
+void turn_neighbour_angles(std::vector<ContactRegion>& patches,
+                           const model::ContactSearchSettings& s) {
+  if (!(s.d_turn_mm > s.d_sep_mm)) return;
+  std::vector<double> turned(patches.size());
+  for (std::size_t k = 0; k < patches.size(); ++k) turned[k] = patches[k].delta_rad;
+  for (std::size_t k = 0; k + 1 < patches.size(); ++k) {
+    ContactRegion& a = patches[k];
+    ContactRegion& b = patches[k + 1];
+    const double d = box_distance(extent_of(a), extent_of(b));
+    if (d <= s.d_sep_mm || d > s.d_turn_mm) continue;
+    if (std::abs(a.delta_rad - b.delta_rad) > s.a_sep_rad) continue;
+    const double f = (s.d_turn_mm - d) / (s.d_turn_mm - s.d_sep_mm);
+    const double mean = (a.weight * a.delta_rad + b.weight * b.delta_rad) / (a.weight + b.weight);
+    turned[k] += f * (mean - a.delta_rad);
+    turned[k + 1] += f * (mean - b.delta_rad);
+  }
+  for (std::size_t k = 0; k < patches.size(); ++k) patches[k].delta_rad = turned[k];
+}
+
 }  // namespace
 
 GapSamples sample_rail(const model::WheelRailProblem& p, const PlacedProfiles& prof) {
@@ -240,16 +264,18 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
   }
   res.patches = combine(std::move(regions), p.search);
   for (ContactRegion& r : res.patches) finish_region(r, prof);
+  turn_neighbour_angles(res.patches, p.search);
   if (res.patches.size() > 10) {
-    // Keep the ten deepest, then restore the lateral order.
+    // Keep the ten deepest.
     std::sort(res.patches.begin(), res.patches.end(),
               [](const ContactRegion& a, const ContactRegion& b) { return a.min_gap < b.min_gap; });
     res.patches.resize(10);
-    std::sort(res.patches.begin(), res.patches.end(),
-              [](const ContactRegion& a, const ContactRegion& b) {
-                return a.reference.y < b.reference.y;
-              });
   }
+  // CONTACT's order: from the field side to the gauge side, i.e. by decreasing lateral position
+  // of the (right-wheel) computation (mbench_a22_varfric case 3: the tread patch first).
+  std::sort(
+      res.patches.begin(), res.patches.end(),
+      [](const ContactRegion& a, const ContactRegion& b) { return a.reference.y > b.reference.y; });
   return res;
 }
 

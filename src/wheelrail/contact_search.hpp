@@ -46,7 +46,7 @@ struct ContactRegion {
 
 struct SearchResult {
   GapFunction gap;
-  std::vector<ContactRegion> patches;   ///< sorted by lateral position, at most 10
+  std::vector<ContactRegion> patches;   ///< by decreasing lateral position, at most 10
   double min_gap_mm = 0.0;              ///< smallest gap anywhere (the start of contact)
   double delta_at_min_rad = 0.0;        ///< rail inclination where the gap is smallest
   double curvature_at_min = 0.0;        ///< d²g/dy² / 2 there [1/mm] (lateral Hertz curvature)

@@ -11,6 +11,7 @@
 #include "rollcontact/errors.hpp"
 #include "rollcontact/wheelrail.hpp"
 #include "wheelrail/contact_search.hpp"
+#include "wheelrail/friction_variation.hpp"
 #include "wheelrail/patch_setup.hpp"
 #include "wheelrail/placed_profiles.hpp"
 #include "wheelrail/vertical_force.hpp"
@@ -226,6 +227,15 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   describe_markers(p, prof, pose, out);
   for (std::size_t k = 0; k < search.patches.size(); ++k) {
     PatchSetup setup = wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings);
+    if (p.friction_variation.along != model::FrictionVariation::Along::None) {
+      // V=1: the rail surface inclination at the reference point (of the right-wheel
+      // computation); V=2: the contact's place along the track.
+      const bool by_angle =
+          p.friction_variation.along == model::FrictionVariation::Along::RailInclination;
+      const double key = by_angle ? std::atan(prof.rail_at_track_y(setup.frame.origin.y).dz_dy)
+                                  : p.motion.s_mm + setup.frame.origin.x;
+      setup.problem.friction = wheelrail::friction_at(p.friction_variation, key);
+    }
     // Steady rolling: the previous solve of this patch position (the last iterate, the last
     // case) is the start of the iterations; a normal-only estimate does not replace it.
     model::SequenceLink& link = setup.problem.sequence;
@@ -243,6 +253,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
       out.message = fmt::format("patch {}: {}", k + 1, sol.solver.message);
     }
     WheelRailPatch w = describe_patch(p, prof, pose, setup, std::move(sol));
+    w.friction = setup.problem.friction;
     total_tr = total_tr + Vec3{w.force_tr.x, w.force_tr.y, w.force_tr.z};
     total_ws = total_ws + Vec3{w.force_ws.x, w.force_ws.y, w.force_ws.z};
     moment_tr = moment_tr + Vec3{w.moment_tr.x, w.moment_tr.y, w.moment_tr.z};

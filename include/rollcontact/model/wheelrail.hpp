@@ -11,6 +11,7 @@
 
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "rollcontact/model/patch_problem.hpp"
 #include "rollcontact/model/profile.hpp"
@@ -84,6 +85,19 @@ struct WheelsetState {
 
 enum class VerticalLoading { Position, Force };
 
+/// Friction that varies with where the contact is (CONTACT's V digit in module 1): Coulomb
+/// coefficients at control points, interpolated linearly in between and constant outside.
+struct FrictionVariation {
+  enum class Along {
+    None,             ///< V=0: the patch template's friction everywhere
+    RailInclination,  ///< V=1: by the contact angle at the patch's reference point [rad]
+    TrackPosition,    ///< V=2: by the contact's position along the track, S_WS + x [mm]
+  };
+  Along along = Along::None;
+  std::vector<double> positions;  ///< strictly increasing control points
+  std::vector<Friction> values;   ///< one Coulomb pair per control point
+};
+
 struct WheelRailProblem {
   WheelSide side = WheelSide::Right;
   /// Bodies (1 = rail, 2 = wheel), friction, kind of tangential problem, pressure model, solver
@@ -99,6 +113,7 @@ struct WheelRailProblem {
   ContactSearchSettings search;
   /// The first case of a sequence: contact at a profile end is an error (misplaced wheel).
   bool first_of_sequence = true;
+  FrictionVariation friction_variation;  ///< V=1, 2; Along::None: patch.friction
 };
 
 }  // namespace rollcontact::model

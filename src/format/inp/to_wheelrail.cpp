@@ -77,8 +77,11 @@ void check_supported(const WheelRailRecord& r) {
   // The patch-level methods exist (module 3); in module 1 they do not yet reproduce CONTACT's
   // mbench_a22_kpec cases 1-3 and 6 (docs/decisions.md), so they are not offered there yet.
   if (d.b == 5 || d.b == 6) not_supported(fmt::format("KPEC/ANALYN B={} (not yet validated)", d.b));
+  // The wheel/rail solver interpolates V=1, 2 friction per patch (model::FrictionVariation); the
+  // .inp route waits until mbench_a22_varfric case 3, whose two patches lie between D_SEP and
+  // D_TURN, agrees (docs/decisions.md): cases 1, 2, 4 and 6 already give CONTACT's digits.
   if (r.variable_friction.v != 0)
-    not_supported(fmt::format("variable friction V={}", r.variable_friction.v));
+    not_supported(fmt::format("variable friction V={} (not yet validated)", r.variable_friction.v));
   if (r.rail.sliced || r.wheel.sliced) not_supported("variable profiles (slices files)");
   if (d.e == 4 || d.e == 5) not_supported(fmt::format("flexible wheelsets E={}", d.e));
   if (r.rail.smooth > 0 && r.rail.ismooth == 2) not_supported("ISMOOTH=2 (rail profile)");
@@ -108,6 +111,14 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   p.search = {ds.dx,     ds.ds,     ds.dqrel,  ds.a_sep,  ds.d_sep,
               ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max};
   p.first_of_sequence = r.case_number == 1;
+  const VariableFriction& vf = r.variable_friction;
+  if (vf.v == 1 || vf.v == 2) {
+    p.friction_variation.along = vf.v == 1 ? model::FrictionVariation::Along::RailInclination
+                                           : model::FrictionVariation::Along::TrackPosition;
+    p.friction_variation.positions = vf.positions;
+    for (const FrictionValues& f : vf.sets)
+      p.friction_variation.values.push_back({f.fstat, f.fkin});
+  }
   return p;
 }
 

@@ -92,6 +92,12 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
     line(os, "");
     line(os, "     XCP(W)      YCP(W)      ZCP(W)");
     line(os, "  " + f4(w.reference_wheel.x) + f4(w.reference_wheel.y) + f4(w.reference_wheel.z));
+    if (r.variable_friction.v != 0) {  // the patch's own coefficients (V=1, 2)
+      line(os, "");
+      line(os, " FRICTION LAW PARAMETERS");
+      line(os, "     FSTAT       FKIN");
+      line(os, "  " + sig(w.friction.static_coefficient) + sig(w.friction.kinetic_coefficient));
+    }
     line(os, "");
     line(os, " KINEMATIC CONSTANTS");
     line(os, "     CHI         DQ          VELOC       CKSI        CETA        CPHI");
