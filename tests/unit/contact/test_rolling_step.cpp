@@ -117,5 +117,29 @@ TEST(TransientRollingStep, LongStepCountsSlipOnlyAfterEntry) {
   EXPECT_GT(std::abs(u.totals.fx - r.totals.fx), 1e-3 * mu_fn);
 }
 
+TEST(TransientRollingStep, ForcePrescribedStepOfTwoElements) {
+  // Issue 18 item 7: from zero tractions with FX prescribed and DQ = 2·DX, CONTACT solves a
+  // creepage 1.5 % larger than half the one of DQ = DX; without the leading-edge correction the
+  // two would be the same shift δq·ξ exactly. Here: FX reached, and the creepage of the long
+  // step above half the short one's by more than 0.5 %, as the correction requires.
+  auto solve = [](double step) {
+    model::PatchProblem p = rolling_case(2, step);
+    p.tangential.prescribed = model::TangentialPrescribed::LongitudinalForceLateralCreepage;
+    p.tangential.force_x_over_mu_fn = -0.4;
+    p.tangential.creepage.lateral = 0.0;
+    p.tangential.creepage.spin_rad_per_mm = 0.0;
+    PatchSolver s;
+    return s.solve(p);
+  };
+  const Solution one = solve(kDx), two = solve(2.0 * kDx);
+  ASSERT_TRUE(one.solver.converged && two.solver.converged);
+  const double mu_fn = 0.3 * two.totals.fn;
+  EXPECT_NEAR(two.totals.fx, -0.4 * mu_fn, 1e-4 * mu_fn);
+  EXPECT_NEAR(one.totals.fx, -0.4 * mu_fn, 1e-4 * mu_fn);
+  const double ratio = 2.0 * two.totals.creep_x / one.totals.creep_x;
+  EXPECT_GT(ratio, 1.005);
+  EXPECT_LT(ratio, 1.10);
+}
+
 }  // namespace
 }  // namespace rollcontact
