@@ -120,11 +120,7 @@ int locked_calculate(Problem& p) {
 
 void run(int* ire, int* icp, int* ierror, bool lock) {
   int code = 0;
-  Target t;
-  if (ire == nullptr || icp == nullptr)
-    code = CNTC_err_icp;
-  else
-    t = library().open(*ire, *icp, Access::Settings, "cntc_calculate", &code);
+  const Target t = open_target(ire, icp, Access::Settings, "cntc_calculate", &code);
   if (t.m3 != nullptr) code = lock ? locked_calculate(*t.m3) : calculate(*t.m3);
   if (t.m1 != nullptr) code = lock ? locked_calculate(*t.m1) : calculate(*t.m1);
   if (ierror != nullptr) *ierror = code;

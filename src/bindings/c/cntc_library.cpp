@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <iostream>
 
+#include "rollcontact/contact_addon.h"
+
 namespace rollcontact::cntc {
 
 namespace {
@@ -214,6 +216,19 @@ Target Library::open(int ire, int icp, Access access, const char* routine, int* 
     if (code != nullptr) *code = status;
   }
   return target;
+}
+
+Target open_target(const int* ire, const int* icp, Access access, const char* routine, int* code) {
+  if (ire == nullptr || icp == nullptr) {
+    library().log(fmt::format("{}: null handle argument (refused)", routine));
+    if (code != nullptr) *code = CNTC_err_icp;
+    return {};
+  }
+  return library().open(*ire, *icp, access, routine, code);
+}
+
+void reject(const char* routine, const std::string& why) {
+  library().log(fmt::format("{}: {} (refused, nothing changed)", routine, why));
 }
 
 Library& library() {

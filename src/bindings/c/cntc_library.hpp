@@ -145,6 +145,14 @@ class Library {
 /// The library's handle table (the C interface has no other place to keep it).
 Library& library();
 
+/// library().open() for the pointer arguments of a routine: a null handle is refused (logged; the
+/// code CNTC_err_icp in *code when given).
+Target open_target(const int* ire, const int* icp, Access access, const char* routine,
+                   int* code = nullptr);
+
+/// Logs that `routine` refused its arguments: nothing was changed (the spec's "rejected").
+void reject(const char* routine, const std::string& why);
+
 /// A C string argument: at most `len` characters, up to the first NUL; blank means empty.
 std::string c_string(const char* s, const int* len);
 

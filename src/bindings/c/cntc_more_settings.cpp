@@ -15,21 +15,7 @@
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::cntc {
-namespace {
-
-Target open_target(const int* ire, const int* icp, Access access, const char* routine) {
-  if (ire == nullptr || icp == nullptr) {
-    library().log(fmt::format("{}: null handle argument (refused)", routine));
-    return {};
-  }
-  return library().open(*ire, *icp, access, routine);
-}
-
-void reject(const char* routine, const std::string& why) {
-  library().log(fmt::format("{}: {} (refused, nothing changed)", routine, why));
-}
-
-}  // namespace
+namespace {}  // namespace
 }  // namespace rollcontact::cntc
 
 using namespace rollcontact;
@@ -117,10 +103,8 @@ CNTC_EXPORT void cntc_settrackdimensions_new(int* ire, int* ztrack, int* nparam,
 
 CNTC_EXPORT void cntc_settrackdimensions_old(int* ire, int* /*ztrack*/, int* /*nparam*/,
                                              double* /*rparam*/) {
-  Module1Problem* p =
-      ire != nullptr ? library().open(*ire, -1, Access::Module1, "cntc_settrackdimensions_old").m1
-                     : nullptr;
-  if (p != nullptr)
+  const int whole = -1;
+  if (open_target(ire, &whole, Access::Module1, "cntc_settrackdimensions_old"))
     reject("cntc_settrackdimensions_old", "the pre-release-21 layout; use cntc_settrackdimensions");
 }
 
@@ -128,12 +112,12 @@ CNTC_EXPORT void cntc_readinpfile(int* ire, int* inp_type, const char* c_fname, 
                                   int* ierror) {
   constexpr const char* name = "cntc_readinpfile";
   int code = 0;
-  Module1Problem* p =
-      ire != nullptr ? library().open(*ire, -1, Access::Module1, name, &code).m1 : nullptr;
+  const int whole = -1;
+  Module1Problem* p = open_target(ire, &whole, Access::Module1, name, &code).m1;
   auto fail = [&](int c) {
     if (ierror != nullptr) *ierror = c;
   };
-  if (p == nullptr) return fail(ire == nullptr ? CNTC_err_icp : code);
+  if (p == nullptr) return fail(code);
   if (inp_type == nullptr || *inp_type != 1988) {
     library().log(fmt::format("{}: input type {} not supported (1988: CONTACT module-1 .inp)", name,
                               inp_type != nullptr ? *inp_type : 0));

@@ -30,11 +30,7 @@ struct PatchView {
 };
 
 std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* routine) {
-  if (ire == nullptr || icp == nullptr) {
-    library().log(fmt::format("{}: null handle argument (refused)", routine));
-    return std::nullopt;
-  }
-  const Target t = library().open(*ire, *icp, Access::Results, routine);
+  const Target t = open_target(ire, icp, Access::Results, routine);
   if (!t) return std::nullopt;
   PatchView v;
   v.units = t.units();
@@ -256,8 +252,8 @@ CNTC_EXPORT void cntc_getdisplacements(int* ire, int* icp, int* lenarr, double* 
 }
 
 CNTC_EXPORT void cntc_getcalculationtime(int* ire, int* icp, double* tcpu, double* twall) {
-  if (ire == nullptr || icp == nullptr || tcpu == nullptr || twall == nullptr) return;
-  const Target t = library().open(*ire, *icp, Access::Results, "cntc_getcalculationtime");
+  if (tcpu == nullptr || twall == nullptr) return;
+  const Target t = open_target(ire, icp, Access::Results, "cntc_getcalculationtime");
   if (t.m3 != nullptr) {
     *tcpu = t.m3->cpu_seconds;
     *twall = t.m3->wall_seconds;
@@ -268,8 +264,7 @@ CNTC_EXPORT void cntc_getcalculationtime(int* ire, int* icp, double* tcpu, doubl
 }
 
 CNTC_EXPORT void cntc_resetcalculationtime(int* ire, int* icp) {
-  if (ire == nullptr || icp == nullptr) return;
-  const Target t = library().open(*ire, *icp, Access::Results, "cntc_resetcalculationtime");
+  const Target t = open_target(ire, icp, Access::Results, "cntc_resetcalculationtime");
   if (t.m3 != nullptr) t.m3->cpu_seconds = t.m3->wall_seconds = 0.0;
   if (t.m1 != nullptr) t.m1->cpu_seconds = t.m1->wall_seconds = 0.0;
 }

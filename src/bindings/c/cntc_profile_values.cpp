@@ -66,8 +66,9 @@ using namespace rollcontact::cntc;
 CNTC_EXPORT void cntc_getprofilevalues(int* ire, int* itask, int* nints, int* iparam, int* nreals,
                                        double* rparam, int* lenarr, double* values) {
   constexpr const char* name = "cntc_getprofilevalues";
-  if (ire == nullptr || itask == nullptr || lenarr == nullptr || values == nullptr) return;
-  Module1Problem* p = library().open(*ire, -1, Access::Module1, name).m1;
+  if (itask == nullptr || lenarr == nullptr || values == nullptr) return;
+  const int whole = -1;
+  Module1Problem* p = open_target(ire, &whole, Access::Module1, name).m1;
   if (p == nullptr) return;
   const int n_i = nints != nullptr ? *nints : 0, n_r = nreals != nullptr ? *nreals : 0;
   const bool wheel = n_i >= 1 && iparam != nullptr && std::clamp(iparam[0], 0, 1) == 1;

@@ -15,14 +15,6 @@
 namespace rollcontact::cntc {
 namespace {
 
-Target open_target(const int* ire, const int* icp, Access access, const char* routine) {
-  if (ire == nullptr || icp == nullptr) {
-    library().log(fmt::format("{}: null handle argument (refused)", routine));
-    return {};
-  }
-  return library().open(*ire, *icp, access, routine);
-}
-
 /// The parts of a case both modules have, with the problem's units.
 struct Common {
   format::ControlDigits& digits;
@@ -39,10 +31,6 @@ Common common(const Target& t) {
   }
   auto& r = t.m1->record;
   return {r.digits, r.solver, r.friction, r.materials, t.m1->units};
-}
-
-void reject(const char* routine, const std::string& why) {
-  library().log(fmt::format("{}: {} (refused, nothing changed)", routine, why));
 }
 
 int clamp(int v, int lo, int hi) {

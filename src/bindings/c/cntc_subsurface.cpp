@@ -19,18 +19,6 @@ namespace {
 
 constexpr int kMaxBlocks = 10;
 
-Target open_target(const int* ire, const int* icp, Access access, const char* routine) {
-  if (ire == nullptr || icp == nullptr) {
-    library().log(fmt::format("{}: null handle argument (refused)", routine));
-    return {};
-  }
-  return library().open(*ire, *icp, access, routine);
-}
-
-void reject(const char* routine, const std::string& why) {
-  library().log(fmt::format("{}: {} (refused, nothing changed)", routine, why));
-}
-
 /// Sorted, unique, positive element indices.
 std::vector<int> index_list(const double* v, int n) {
   std::vector<int> out;

@@ -21,15 +21,7 @@ namespace {
 
 Module1Problem* wheel_rail(const int* ire, const char* routine, Access access = Access::Module1,
                            int icp = -1) {
-  if (ire == nullptr) {
-    library().log(fmt::format("{}: null handle argument (refused)", routine));
-    return nullptr;
-  }
-  return library().open(*ire, icp, access, routine).m1;
-}
-
-void reject(const char* routine, const std::string& why) {
-  library().log(fmt::format("{}: {} (refused, nothing changed)", routine, why));
+  return open_target(ire, &icp, access, routine).m1;
 }
 
 /// The profile options of setprofileinputfname/values: iparam = [itype, –, mirrory, mirrorz,
