@@ -301,10 +301,12 @@ RunResult run_input_file(const std::filesystem::path& input, const RunOptions& o
       options.output_dir.empty() ? input.parent_path() : options.output_dir;
   const std::filesystem::path stem = dir / input.stem();
   refuse_overwriting_input(input, stem);
-  const std::vector<format::InputCase> problems = read_problems(input);
+  std::vector<format::InputCase> problems = read_problems(input);
   validate_cases(problems);
   prepare_output_dir(dir);
-  return run_problems(problems, input.filename().string(), stem, options);
+  RunResult result = run_problems(problems, input.filename().string(), stem, options);
+  result.inputs = std::move(problems);
+  return result;
 }
 
 }  // namespace rollcontact::batch

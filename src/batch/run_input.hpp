@@ -42,6 +42,9 @@ struct RunOptions {
 
 struct RunResult {
   std::vector<CaseOutcome> cases;
+  /// The cases as read, in the order of `cases` (run_input_file only; run_problems leaves it
+  /// empty): what callers need beyond the outcomes (e.g. a wheel/rail case's profiles).
+  std::vector<format::InputCase> inputs;
   std::filesystem::path report_path, json_path;
   int failed = 0;  ///< errors + not converged
 };

@@ -91,6 +91,9 @@ def test_wheelrail_case_from_a_python_dict(cli, tmp_path):
     subprocess.run([cli, "run", "-q", str(tmp_path / "case.toml")], check=True)
     ref = json.loads((tmp_path / "case.json").read_text())["cases"][0]
     assert r["force_tr"] == ref["force_tr"]
+    (t,) = rc.run(tmp_path / "case.toml", tmp_path / "py")  # a TOML file run from Python
+    assert t["force_tr"] == ref["force_tr"]
+    assert t["side"] == "right" and len(t["rail_profile"]["y"]) > 100
     ys = [rc.set_value(case, "wheel_rail.position.y_mm", y) for y in (0.0, 2.0, 4.0)]
     solver = rc.Solver()
     lateral = [solver.solve(c, base_dir=tmp_path)["patches"][0]["reference_tr"][1] for c in ys]

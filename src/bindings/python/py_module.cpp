@@ -9,7 +9,6 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -53,14 +52,9 @@ py::dict profile_points(const Profile& p) {
 
 /// Module-1 cases get their side and the rail and wheel profiles as read (profile coordinates,
 /// mm, z down), for plots in track coordinates with the markers of the solution.
-void attach_profiles(const std::filesystem::path& path, const batch::RunResult& r,
-                     py::list& cases) {
-  const bool any = std::any_of(r.cases.begin(), r.cases.end(),
-                               [](const auto& o) { return o.wheel_rail && o.solved; });
-  if (!any || path.extension() == ".toml") return;
-  const std::vector<format::InputCase> inputs = format::read_input_cases(path);
-  for (std::size_t k = 0; k < inputs.size() && k < r.cases.size(); ++k) {
-    const auto* w = std::get_if<format::WheelRailRecord>(&inputs[k]);
+void attach_profiles(const batch::RunResult& r, py::list& cases) {
+  for (std::size_t k = 0; k < r.inputs.size() && k < r.cases.size(); ++k) {
+    const auto* w = std::get_if<format::WheelRailRecord>(&r.inputs[k]);
     if (w == nullptr || !r.cases[k].solved) continue;
     py::dict d = cases[k];
     d["side"] = w->is_left() ? "left" : "right";
@@ -80,7 +74,7 @@ py::list run_file(const std::filesystem::path& path, const std::filesystem::path
   }
   py::list cases;
   for (auto& o : r.cases) cases.append(outcome_to_dict(o));
-  attach_profiles(path, r, cases);
+  attach_profiles(r, cases);
   return cases;
 }
 
