@@ -57,7 +57,7 @@ void store_profile(
     const format::ProfileOptions options{is_wheel, spec.mirror_y, spec.mirror_z, spec.scale_yz};
     spec.profile = read(options, warnings);
     const double length = format::profile_chord_length(spec.profile);
-    if (length < format::kMinProfileLength_mm || length > format::kMaxProfileLength_mm)
+    if (!format::is_admissible_profile_length(length))
       throw GeometryError(fmt::format(
           "{} profile has a length of {:.6g} mm, outside 5..500 mm: the scale factor or the "
           "file's units are probably wrong",

@@ -573,7 +573,7 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
   }
   auto check_chord = [&](const Profile& prof) {
     const double chord = profile_chord_length(prof);
-    if (!(chord >= kMinProfileLength_mm && chord <= kMaxProfileLength_mm)) {
+    if (!is_admissible_profile_length(chord)) {
       in.fail(line,
               fmt::format("{} profile '{}' has a chord length of {:.6g} mm, outside 5..500 mm "
                           "(check SCALEYZ = {})",

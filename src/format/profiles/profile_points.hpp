@@ -43,4 +43,9 @@ double profile_chord_length(const Profile& profile);
 /// The admissible profile lengths [mm] (release 25.1): outside, SCALEYZ or the units are wrong.
 inline constexpr double kMinProfileLength_mm = 5.0, kMaxProfileLength_mm = 500.0;
 
+/// True for a chord length [mm] within the admissible range (false for NaN).
+inline bool is_admissible_profile_length(double chord_mm) {
+  return chord_mm >= kMinProfileLength_mm && chord_mm <= kMaxProfileLength_mm;
+}
+
 }  // namespace rollcontact::format

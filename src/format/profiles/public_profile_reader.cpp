@@ -21,7 +21,7 @@ Profile read_profile(const std::filesystem::path& path, const ProfileFileOptions
   std::vector<std::string> local;
   Profile p = format::read_profile_file(path, o, warnings != nullptr ? *warnings : local);
   const double length = format::profile_chord_length(p);
-  if (!(length >= format::kMinProfileLength_mm && length <= format::kMaxProfileLength_mm))
+  if (!format::is_admissible_profile_length(length))
     throw GeometryError(fmt::format(
         "{} profile '{}' has a length of {:.6g} mm, outside 5..500 mm: SCALEYZ ({}) or the "
         "file's units are probably wrong",

@@ -75,7 +75,7 @@ ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, const Co
     ps.profile = finish_profile(raw, options, warnings);
   }
   const double chord = profile_chord_length(ps.profile);
-  if (!(chord >= kMinProfileLength_mm && chord <= kMaxProfileLength_mm))
+  if (!is_admissible_profile_length(chord))
     t.fail(
         fmt::format("the {} profile has a length of {:.6g} mm, outside 5..500 mm (check scale "
                     "= {} or the file's units)",
