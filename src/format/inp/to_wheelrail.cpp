@@ -35,22 +35,12 @@ namespace {
 /// The settings every patch shares, through the module-3 adapter: a case record with the
 /// module-1 meanings of N, E, Z taken out (each patch is posed with its approach).
 model::PatchProblem patch_template(const WheelRailRecord& r) {
-  CaseRecord t;
-  t.case_number = r.case_number;
-  t.result_element = r.result_element;
-  t.digits = r.digits;
+  CaseRecord t = settings_record(r);
   t.digits.n = 0;
   t.digits.e = 0;
   t.digits.z = 0;
   t.digits.v = 0;
   t.digits.g = r.solver.method;
-  t.solver = r.solver;
-  t.friction = r.friction;
-  t.materials = r.materials;
-  t.damping = r.damping;
-  t.heat = r.heat;
-  t.subsurface = r.subsurface;
-  t.source = r.source;
   return to_patch_problem(t);
 }
 
@@ -64,6 +54,15 @@ CaseRecord identity_record(const WheelRailRecord& r) {
   p.solver = r.solver;
   p.friction = r.friction;
   p.source = r.source;
+  return p;
+}
+
+CaseRecord settings_record(const WheelRailRecord& r) {
+  CaseRecord p = identity_record(r);
+  p.materials = r.materials;
+  p.damping = r.damping;
+  p.heat = r.heat;
+  p.subsurface = r.subsurface;
   return p;
 }
 

@@ -18,6 +18,11 @@ CaseRecord identity_record(const WheelRailRecord& record);
 /// A profile line's points and smoothing options as the wheel/rail model takes them.
 model::WheelRailProfile to_wheelrail_profile(const ProfileSpec& spec);
 
+/// The settings every patch of `record` shares (digits, solver, friction, material, damping,
+/// heat, subsurface) with its identity, as a module-3 record: the report, the TOML writer and
+/// the patch template start from it.
+CaseRecord settings_record(const WheelRailRecord& record);
+
 /// The physics of `record`. Calls check_supported() first.
 model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& record);
 

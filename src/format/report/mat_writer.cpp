@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "format/inp/to_wheelrail.hpp"
 #include "format/report/number_format.hpp"
 #include "format/report/report_values.hpp"
 #include "format/text/atomic_file.hpp"
@@ -302,9 +303,7 @@ namespace rollcontact::format {
 std::vector<std::filesystem::path> write_wheelrail_mat_files(
     const std::filesystem::path& output_stem, const WheelRailRecord& record,
     const CaseRecord& identity, const WheelRailSolution& solution) {
-  // The patch settings as a module-3 record: digits, material, friction of the case.
-  CaseRecord patch = identity;
-  patch.materials = record.materials;
+  const CaseRecord patch = settings_record(record);
   MatWheelRailContext wr;
   const WheelsetMotion& m = record.motion;
   wr.s_ws = m.s;

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <variant>
 
+#include "format/inp/to_wheelrail.hpp"
 #include "format/text/atomic_file.hpp"
 #include "format/toml/toml_case_schema.hpp"
 #include "rollcontact/errors.hpp"
@@ -517,19 +518,6 @@ class WheelRailWriter {
   }
 
  private:
-  static CaseRecord identity(const WheelRailRecord& r) {
-    CaseRecord p;
-    p.case_number = r.case_number;
-    p.result_element = r.result_element;
-    p.digits = r.digits;
-    p.solver = r.solver;
-    p.friction = r.friction;
-    p.materials = r.materials;
-    p.damping = r.damping;
-    p.heat = r.heat;
-    p.subsurface = r.subsurface;
-    return p;
-  }
   void line(std::string_view key, const std::string& value) {
     out_ += fmt::format("{} = {}\n", key, value);
   }
@@ -622,7 +610,7 @@ class WheelRailWriter {
 
   std::string& out_;
   const WheelRailRecord& r_;
-  CaseRecord id_ = identity(r_);
+  CaseRecord id_ = settings_record(r_);
   const std::filesystem::path& base_dir_;
 };
 
