@@ -179,7 +179,7 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution,
   const MatWheelRailContext& wr = wheel_rail != nullptr ? *wheel_rail : none;
   const ControlDigits& d = problem.digits;
   const Grid& grid = solution.grid;
-  const EffectiveKinematics ek = effective_kinematics(problem, solution);
+  const EffectiveKinematics ek = effective_kinematics(solution);
   const bool rolling = d.t == 2 || d.t == 3;
   const bool plastic = uses_plasticity(problem);
   const bool heat = d.h >= 1;

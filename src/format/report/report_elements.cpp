@@ -59,7 +59,7 @@ void write_element_table(std::ostream& os, const CaseRecord& problem, const Solu
 
   const double pen = effective_approach(problem, solution);
   const double mu = static_friction(problem.friction);
-  const EffectiveKinematics ek = effective_kinematics(problem, solution);
+  const EffectiveKinematics ek = effective_kinematics(solution);
   const EffectiveCreepages c = printed_creepages(problem, solution);
   const auto& kin = problem.kinematics;
   const bool rolling = d.t >= 2;

@@ -147,7 +147,7 @@ void write_material_block(std::ostream& os, const CaseRecord& problem, const Sol
   // Not printed for lack of data in CaseRecord: damping (M2=2) and heat constants (H>=1).
   if (d.m == 1) {
     const CombinedMaterial rv = rubbery_material(m);
-    const double veloc = effective_kinematics(problem, solution).veloc;
+    const double veloc = effective_kinematics(solution).veloc;
     line(os, "");
     line(os, " VISCOELASTIC MATERIAL CONSTANTS");
     line(os, "     NUV         GV          AKV");
@@ -245,7 +245,7 @@ void write_friction_block(std::ostream& os, const Friction& fr, int output_digit
 void write_kinematics_block(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;
   const auto& kin = problem.kinematics;
-  const EffectiveKinematics ek = effective_kinematics(problem, solution);
+  const EffectiveKinematics ek = effective_kinematics(solution);
   const std::string veloc = sig(ek.veloc), cksi = sig(kin.cksi), ceta = sig(kin.ceta),
                     cphi = sig(kin.cphi);
   const std::string fxrel = sig(kin.fx_rel), fyrel = sig(kin.fy_rel);

@@ -1,32 +1,16 @@
 #include "format/report/report_values.hpp"
 
 #include <cmath>
-#include <numbers>
 
 namespace rollcontact::format {
 
-EffectiveKinematics effective_kinematics(const CaseRecord& problem, const Solution& solution) {
-  const auto& dg = problem.digits;
-  const auto& kin = problem.kinematics;
+EffectiveKinematics effective_kinematics(const Solution& solution) {
+  const rollcontact::EffectiveKinematics& k = solution.kinematics;
   EffectiveKinematics e;
-  if (dg.t <= 1) return e;  // shifts and normal problems: chi=0, dq=1 mm, V=1 mm/s, dt=1 s
-  e.chi = kin.chi;
-  e.dq = kin.dq;
-  e.veloc = kin.veloc;
-  const bool simplified = dg.m == 2 || dg.m == 3 || (dg.m >= 5 && dg.m <= 7);
-  // Steady rolling: the step is one element whatever the solver (tangential/kinematics.cpp).
-  if (dg.t == 3) e.dq = solution.grid.dx;
-  const bool grid_bound = dg.t == 3 && (simplified || dg.g != 2 || dg.m == 4);
-  if (grid_bound) {
-    // Steady-state solvers march over grid columns: the rolling direction is +x or -x.
-    const double pi = std::numbers::pi;
-    const double tol = simplified ? 1e-12 : 0.01;
-    const double c = std::remainder(e.chi, 2.0 * pi);
-    const bool along_x = std::fabs(c) <= tol || std::fabs(std::fabs(c) - pi) <= tol;
-    if (!along_x) e.chi = 0.0;
-  }
-  if (dg.m == 1 && dg.t == 3) e.chi = 0.0;
-  e.dt = e.veloc > 0.0 ? e.dq / e.veloc : 1.0;
+  e.chi = k.chi;
+  e.dq = k.dq;
+  e.veloc = k.veloc;
+  e.dt = k.dt;
   return e;
 }
 

@@ -16,9 +16,9 @@ struct EffectiveKinematics {
   double dt = 1.0;     ///< [s]
 };
 
-/// Applies physics.md §14: T<=1 gives chi=0, dq=1, V=1; steady rolling uses dq = dx, and with a
-/// grid-bound solver or a simplified theory chi in {0, pi}.
-EffectiveKinematics effective_kinematics(const CaseRecord& problem, const Solution& solution);
+/// χ, δq, V and δt as the solver used them (physics.md §14 applied once, in
+/// tangential/kinematics.cpp, and carried in Solution::kinematics).
+EffectiveKinematics effective_kinematics(const Solution& solution);
 
 /// Static friction coefficient mu_s that scales relative forces (FX/FSTAT/FN): FSTAT for
 /// Coulomb, the zero-slip value FKIN + P1 + P3 for the falling laws L=2..4, FREF for L=6.

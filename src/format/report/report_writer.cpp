@@ -94,7 +94,7 @@ void write_case_report(std::ostream& os, const CaseRecord& problem, const Soluti
   if (d.o >= 3) {
     report::line(os, "");
     report::line(os, " FORM OF THE CONTACT, ADHESION AND SLIP-AREA`S:");
-    write_element_division(os, solution, d.t, effective_kinematics(problem, solution).chi);
+    write_element_division(os, solution, d.t, effective_kinematics(solution).chi);
   }
   if (d.o >= 5) report::write_element_table(os, problem, solution);
   report::write_subsurface_summaries(os, problem, solution);

@@ -62,7 +62,8 @@ std::pair<format::CaseRecord, Solution> small_case(int a_digit) {
   s.sy = {0.0, 0.0, 4e-4, 0.0, 0.0, 0.0};
   using S = ElementState;
   s.state = {S::Exterior, S::Adhesion, S::Slip, S::Exterior, S::Adhesion, S::Adhesion};
-  s.kinematics = {0.0, 0.25, 2000.0, 0.25 / 2000.0};
+  // As the solver reports them: steady rolling steps one element (DQ = DX = 1 mm).
+  s.kinematics = {0.0, 1.0, 2000.0, 1.0 / 2000.0};
   return {p, s};
 }
 
