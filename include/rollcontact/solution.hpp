@@ -84,6 +84,9 @@ struct SolverReport {
   /// less of a fine one.
   int tangential_coarse_iterations = 0;
   int newton_iterations = 0;
+  /// Passes of the slip-velocity fixed point (velocity-dependent friction) and its trace.
+  int slip_velocity_passes = 0;
+  std::vector<std::string> slip_velocity_trace;
 };
 
 /// Effective parameters of the simplified theory (M=2,3,5; spec/physics.md §11.2), for reports.
@@ -127,6 +130,8 @@ struct Solution {
   std::vector<double> px, py;      ///< tangential tractions [N/mm²]
   std::vector<double> un, ux, uy;  ///< displacement differences [mm]
   std::vector<double> sx, sy;      ///< slip (velocity / δq, or distance for T=1)
+  /// Coefficient of friction per element in effect (velocity-dependent laws only, else empty).
+  std::vector<double> mu;
   std::vector<ElementState> state;
   EffectiveKinematics kinematics;
   Sensitivities sensitivities;

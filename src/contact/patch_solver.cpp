@@ -12,6 +12,7 @@
 #include "contact/force_iteration.hpp"
 #include "contact/patch_solver_impl.hpp"
 #include "contact/result_check.hpp"
+#include "contact/slip_velocity_iteration.hpp"
 #include "elastic/material.hpp"
 #include "geometry/discretisation.hpp"
 #include "geometry/hertz.hpp"
@@ -38,7 +39,10 @@ using Field = std::vector<double>;
 struct PreviousFields {
   bool present = false;
   Field px, py, pn;
-  Field ux, uy;  ///< displacements (transient Fastsim)
+  Field ux, uy;        ///< displacements (transient Fastsim)
+  Field sx, sy;        ///< slip per δq (T=1: per step)
+  Field mu;            ///< velocity-dependent friction: μ per element (else empty)
+  double veloc = 1.0;  ///< rolling velocity [mm/s] of the previous case
 };
 
 PreviousFields map_previous(const Solution* prev, const Grid& grid) {
@@ -49,7 +53,12 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid) {
   out.pn.assign(n, 0.0);
   out.ux.assign(n, 0.0);
   out.uy.assign(n, 0.0);
+  out.sx.assign(n, 0.0);
+  out.sy.assign(n, 0.0);
   if (prev == nullptr || prev->pn.empty()) return out;
+  out.veloc = prev->kinematics.veloc;
+  const bool has_mu = prev->mu.size() == prev->grid.size();
+  if (has_mu) out.mu.assign(n, -1.0);  // -1: not known here (μ_static)
   const Grid& old = prev->grid;
   if (std::abs(old.dx - grid.dx) > 1e-6 * grid.dx || std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
     return out;
@@ -70,6 +79,11 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid) {
         out.ux[i] = prev->ux[j];
         out.uy[i] = prev->uy[j];
       }
+      if (prev->sx.size() == old.size()) {
+        out.sx[i] = prev->sx[j];
+        out.sy[i] = prev->sy[j];
+      }
+      if (has_mu) out.mu[i] = prev->mu[j];
     }
   }
   out.present = true;
@@ -235,8 +249,14 @@ class CaseSolver {
   /// B=2,3 (whose discrete pressures sum to FN only up to the discretisation error).
   double total_normal_force() const;
   tangential::TangentialResult solve_simplified(double cksi, double ceta, double cphi);
+  /// `mu`: the coefficient per element (velocity-dependent friction), nullptr: the law's bound.
   tangential::TangentialResult solve_tangential(double cksi, double ceta, double cphi,
-                                                const Field* px0, const Field* py0);
+                                                const Field* px0, const Field* py0,
+                                                const Field* mu = nullptr);
+  /// The exact tangential problem with a velocity-dependent friction law: the slip-velocity
+  /// fixed point of physics.md §10.3 around solve_tangential(); tractions start from px, py.
+  tangential::TangentialResult solve_velocity_dependent(double cksi, double ceta, double cphi,
+                                                        const Field& px, const Field& py);
   void assemble_slip_at_zero_traction(tangential::TangentialSystem& sys, double cksi, double ceta,
                                       double cphi);
   void add_unshifted_displacement(const Field& px, const Field& py, const Field& pn, Field& ux,
@@ -255,6 +275,7 @@ class CaseSolver {
   Field simplified_ux_, simplified_uy_;
   std::unique_ptr<physics::FrictionLaw> friction_;
   PreviousFields prev_;
+  Field mu_;  ///< velocity-dependent friction: μ per element of the last solve
   TangentialOperators* tops_ = nullptr;
   std::vector<std::string> notes_;
 };
@@ -487,8 +508,65 @@ void CaseSolver::assemble_slip_at_zero_traction(tangential::TangentialSystem& sy
   }
 }
 
+tangential::TangentialResult CaseSolver::solve_velocity_dependent(double cksi, double ceta,
+                                                                  double cphi, const Field& px,
+                                                                  const Field& py) {
+  const std::size_t n = grid_.size();
+  const EffectiveKinematics& k = sol_.kinematics;
+  std::vector<char> contact(n, 0);
+  for (std::size_t i = 0; i < n; ++i) contact[i] = sol_.pn[i] > 0.0;
+  contact::FrictionMemoryInput memory;
+  memory.grid = &grid_;
+  memory.contact = &contact;
+  memory.law = friction_.get();
+  memory.memory_distance_mm = problem_.friction.memory_distance_mm;
+  memory.memory_floor_speed_mm_s = problem_.friction.memory_floor_speed_mm_s;
+  memory.dt_s = k.dt;
+  memory.steady = problem_.tangential.kind == model::TangentialKind::SteadyRolling;
+  memory.chi_rad = k.chi;
+  memory.previous_mu = prev_.mu.empty() ? nullptr : &prev_.mu;
+
+  Field speed(n, 0.0);
+  switch (problem_.solver.initial_slip_velocity) {
+    case model::InitialSlipVelocity::Previous:  // |S|/δt = |s|·δq/δt = |s|·V of that case
+      if (prev_.present)
+        for (std::size_t i = 0; i < n; ++i)
+          speed[i] = std::hypot(prev_.sx[i], prev_.sy[i]) * prev_.veloc;
+      break;
+    case model::InitialSlipVelocity::Zero:
+      break;
+    case model::InitialSlipVelocity::RollingVelocity:
+      speed.assign(n, k.veloc);
+      break;
+  }
+  contact::SlipVelocitySettings settings;
+  settings.relaxation = problem_.solver.slip_velocity_relaxation;
+  settings.max_passes = problem_.solver.max_slip_velocity_passes;
+  Field start_x = px, start_y = py;
+  contact::SlipVelocityOutcome r =
+      contact::solve_with_slip_velocity(memory, speed, settings, [&](const Field& mu) {
+        tangential::TangentialResult t =
+            solve_tangential(cksi, ceta, cphi, &start_x, &start_y, &mu);
+        sol_.solver.tangential_iterations += t.iterations;
+        start_x = t.px;
+        start_y = t.py;
+        return t;
+      });
+  sol_.solver.slip_velocity_passes += r.passes;
+  sol_.solver.slip_velocity_trace = std::move(r.trace);
+  mu_ = std::move(r.mu);
+  tangential::TangentialResult tang = std::move(r.tangential);
+  tang.iterations = 0;  // counted per pass above
+  if (!r.converged && tang.converged) {
+    tang.converged = false;
+    tang.message = r.message;
+  }
+  return tang;
+}
+
 tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ceta, double cphi,
-                                                          const Field* px0, const Field* py0) {
+                                                          const Field* px0, const Field* py0,
+                                                          const Field* mu) {
   using namespace tangential;
   const std::size_t n = grid_.size();
   const model::TangentialKind kind = problem_.tangential.kind;
@@ -498,7 +576,13 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
   sys.a = tops_->view();
   sys.contact.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) sys.contact[i] = sol_.pn[i] > 0.0;
-  friction_->traction_bounds(sol_.pn, sys.bound);
+  if (mu != nullptr) {
+    sys.bound.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (sys.contact[i]) sys.bound[i] = (*mu)[i] * sol_.pn[i];
+  } else {
+    friction_->traction_bounds(sol_.pn, sys.bound);
+  }
   assemble_slip_at_zero_traction(sys, cksi, ceta, cphi);
 
   TangentialSettings settings;
@@ -596,8 +680,10 @@ void CaseSolver::run() {
       solve_normal(max_outer > 1 ? px : Field(n, 0.0), max_outer > 1 ? py : Field(n, 0.0));
     if (!tangential) break;
     auto evaluate = [&](double cksi, double ceta) {
-      tang = simplified_ ? solve_simplified(cksi, ceta, creepage.spin_rad_per_mm)
-                         : solve_tangential(cksi, ceta, creepage.spin_rad_per_mm, &px, &py);
+      const double cphi = creepage.spin_rad_per_mm;
+      tang = simplified_                       ? solve_simplified(cksi, ceta, cphi)
+             : friction_->velocity_dependent() ? solve_velocity_dependent(cksi, ceta, cphi, px, py)
+                                               : solve_tangential(cksi, ceta, cphi, &px, &py);
       sol_.solver.tangential_iterations += tang.iterations;
       px = tang.px;
       py = tang.py;
@@ -659,6 +745,9 @@ void CaseSolver::run() {
   }
   sol_.statistics.inorm = prescribed_ ? 0 : outer;
   sol_.statistics.itang = tangential ? outer : 0;
+  // With velocity-dependent friction ITANG counts the slip-velocity passes, as in CONTACT.
+  if (tangential && sol_.solver.slip_velocity_passes > 0)
+    sol_.statistics.itang = sol_.solver.slip_velocity_passes;
 
   if (tangential) {
     if (kind == model::TangentialKind::Shift) {
@@ -681,6 +770,7 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   const double area = grid_.element_area();
   Solution& s = sol_;
   s.px = tang ? tang->px : Field(n, 0.0);
+  s.mu = mu_;
   s.py = tang ? tang->py : Field(n, 0.0);
   s.sx.assign(n, 0.0);
   s.sy.assign(n, 0.0);

@@ -101,6 +101,14 @@ void loading(const PatchProblem& p) {
 void friction_and_solver(const PatchProblem& p) {
   at_least("friction.static_coefficient", p.friction.static_coefficient, 0.0);
   at_least("friction.kinetic_coefficient", p.friction.kinetic_coefficient, 0.0);
+  if (p.friction.velocity_dependent()) {
+    for (const FallingTerm& term : p.friction.terms) {
+      at_least("friction.terms.coefficient", term.coefficient, 0.0);
+      positive("friction.terms.speed_mm_s", term.speed_mm_s);
+    }
+    at_least("friction.memory_distance_mm", p.friction.memory_distance_mm, 0.0);
+    at_least("friction.memory_floor_speed_mm_s", p.friction.memory_floor_speed_mm_s, 0.0);
+  }
   const SimplifiedParameters& s = p.bodies.simplified;
   finite("bodies.simplified.flexibility_mm3_N", s.flexibility_mm3_N);
   finite("bodies.simplified.k0", s.k0);

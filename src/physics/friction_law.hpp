@@ -4,6 +4,7 @@
 // the tangential solvers never see the law itself. Velocity- and temperature-dependent laws
 // (issue: extended physics) add implementations here; the solvers stay as they are.
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -19,8 +20,17 @@ class FrictionLaw {
   [[nodiscard]] virtual double traction_bound(double pressure_N_mm2) const = 0;
 
   /// One coefficient of friction for the simplified theories (Fastsim, FaStrip) and the
-  /// normalisation of forces by μ·F_n.
+  /// normalisation of forces by μ·F_n (the static value for velocity-dependent laws).
   [[nodiscard]] virtual double coefficient() const = 0;
+
+  /// μ at slip velocity `slip_speed_mm_s` ≥ 0 (physics.md §10.1); Coulomb: coefficient().
+  [[nodiscard]] virtual double coefficient_at(double slip_speed_mm_s) const {
+    (void)slip_speed_mm_s;
+    return coefficient();
+  }
+
+  /// True when μ depends on the slip velocity (the solution needs the fixed point of §10.3).
+  [[nodiscard]] virtual bool velocity_dependent() const { return false; }
 
   /// g for every element of `pressure_N_mm2` (g = 0 where the pressure is not positive).
   void traction_bounds(const std::vector<double>& pressure_N_mm2, std::vector<double>& bound) const;
@@ -37,6 +47,25 @@ class CoulombLaw final : public FrictionLaw {
 
  private:
   double mu_;
+};
+
+/// Friction falling with the slip velocity (CONTACT's L = 2, 3, 4): μ(s_a) = FKIN + the two
+/// falling terms of physics.md §10.1, from μ_static = FKIN + F_1 + F_2 at s_a = 0 towards FKIN.
+class FallingFrictionLaw final : public FrictionLaw {
+ public:
+  explicit FallingFrictionLaw(const model::Friction& friction);
+  [[nodiscard]] double traction_bound(double pressure_N_mm2) const override {
+    return static_coefficient_ * pressure_N_mm2;
+  }
+  [[nodiscard]] double coefficient() const override { return static_coefficient_; }
+  [[nodiscard]] double coefficient_at(double slip_speed_mm_s) const override;
+  [[nodiscard]] bool velocity_dependent() const override { return true; }
+
+ private:
+  model::FrictionLawKind kind_;
+  double kinetic_;
+  std::array<model::FallingTerm, 2> terms_;
+  double static_coefficient_;
 };
 
 /// The law that `friction` of the model describes.

@@ -1,17 +1,41 @@
 #pragma once
-// The friction law at the interface. Today Coulomb's law; velocity- and temperature-dependent
-// laws are further alternatives (issue: extended physics).
+// The friction law at the interface (spec/physics.md §10): Coulomb's law, or a coefficient that
+// falls with the local slip velocity s_a [mm/s] (CONTACT's L = 2, 3, 4), with friction memory.
+
+#include <array>
 
 namespace rollcontact::model {
 
-/// Coulomb friction: the traction bound is μ·p_n with μ the static coefficient while adhering.
-/// The kinetic coefficient is carried for reports; Coulomb's law of the exact solvers uses the
-/// static one (as CONTACT does with L=0, where both are equal).
-struct CoulombFriction {
-  double static_coefficient = 0.3;   ///< μ_s [-], ≥ 0
-  double kinetic_coefficient = 0.3;  ///< μ_k [-], ≥ 0
+/// How μ depends on the slip velocity s_a (physics.md §10.1).
+enum class FrictionLawKind {
+  Coulomb,            ///< L = 0: μ = static coefficient
+  LinearFalling,      ///< L = 2: FKIN + Σ F_k·max(0, 1 − s_a/(2·S_k))
+  RationalFalling,    ///< L = 3: FKIN + F_1/(1 + s_a/S_1) + F_2/(1 + (s_a/S_2)²)
+  ExponentialFalling  ///< L = 4: FKIN + Σ F_k·2^(−s_a/S_k)
 };
 
-using Friction = CoulombFriction;
+/// One falling term of L = 2, 3, 4: its height F_k [-] and slip velocity S_k [mm/s] (SABSH).
+struct FallingTerm {
+  double coefficient = 0.0;
+  double speed_mm_s = 1e-4;
+};
+
+/// Coulomb friction (the first two members, so that {μ_s, μ_k} stays Coulomb's law), or a
+/// velocity-dependent law. For the falling laws static_coefficient is μ(s_a = 0) = FKIN + F_1 +
+/// F_2: it scales the relative forces (FX/FSTAT/FN) and is the coefficient of adhering elements.
+struct Friction {
+  double static_coefficient = 0.3;   ///< μ_s [-], ≥ 0
+  double kinetic_coefficient = 0.3;  ///< μ_k [-], ≥ 0 (FKIN of the falling laws)
+  FrictionLawKind law = FrictionLawKind::Coulomb;
+  std::array<FallingTerm, 2> terms{};  ///< L = 2, 3, 4 only
+  /// Friction memory (§10.2): μ relaxes towards μ(s_a) over the sliding distance
+  /// memory_distance_mm, with slip velocities below memory_floor_speed_mm_s counted as that.
+  double memory_distance_mm = 0.0;
+  double memory_floor_speed_mm_s = 0.0;
+
+  [[nodiscard]] bool velocity_dependent() const { return law != FrictionLawKind::Coulomb; }
+};
+
+using CoulombFriction = Friction;
 
 }  // namespace rollcontact::model

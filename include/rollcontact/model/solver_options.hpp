@@ -10,6 +10,14 @@ enum class TangentialMethod {
   ConvexGS,  ///< Gauss–Seidel with the exact element solution ("ConvexGS")
 };
 
+/// Where the slip-velocity iteration of a velocity-dependent friction law starts (INISLP,
+/// physics.md §10.3); with falling friction the choice can select between several solutions.
+enum class InitialSlipVelocity {
+  Previous,        ///< INISLP = 0: the previous case's slip velocities (zero without one)
+  Zero,            ///< INISLP > 0: from below, μ = μ_static everywhere
+  RollingVelocity  ///< INISLP < 0: from above, s_a = V in every contact element
+};
+
 struct SolverOptions {
   double tolerance = 1e-5;               ///< relative tolerance of every iteration [-]
   int max_inner_iterations = 999;        ///< CG / Gauss–Seidel / Krylov products
@@ -18,6 +26,11 @@ struct SolverOptions {
   TangentialMethod tangential_method = TangentialMethod::Default;
   /// Gauss–Seidel relaxation in adhesion and slip (ConvexGS); 0: the solver's default.
   double relaxation_adhesion = 0.0, relaxation_slip = 0.0;
+  /// Velocity-dependent friction: start, over-relaxation ω_slp (OMGSLP) and the most passes of
+  /// the slip-velocity fixed point (CONTACT: max(1, MAXIN − 10)).
+  InitialSlipVelocity initial_slip_velocity = InitialSlipVelocity::Previous;
+  double slip_velocity_relaxation = 1.0;
+  int max_slip_velocity_passes = 90;
 };
 
 }  // namespace rollcontact::model

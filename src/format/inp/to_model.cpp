@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -84,10 +86,32 @@ model::SolverOptions solver_of(const CaseRecord& r) {
     o.relaxation_adhesion = s.omega_h;
     o.relaxation_slip = s.omega_s;
   }
+  o.initial_slip_velocity = s.inislp == 0  ? model::InitialSlipVelocity::Previous
+                            : s.inislp > 0 ? model::InitialSlipVelocity::Zero
+                                           : model::InitialSlipVelocity::RollingVelocity;
+  o.slip_velocity_relaxation = s.omgslp;
+  o.max_slip_velocity_passes = std::max(1, s.maxin - 10);
   return o;
 }
 
 }  // namespace
+
+model::Friction to_model_friction(int law, const FrictionValues& f, double memdst, double mem_s0) {
+  model::Friction m;
+  m.static_coefficient = f.fstat;
+  m.kinetic_coefficient = f.fkin;
+  if (law == 2 || law == 3 || law == 4) {
+    m.law = law == 2   ? model::FrictionLawKind::LinearFalling
+            : law == 3 ? model::FrictionLawKind::RationalFalling
+                       : model::FrictionLawKind::ExponentialFalling;
+    // CONTACT clamps the slip velocities of the falling terms to at least 1e-4 mm/s.
+    m.terms = {model::FallingTerm{f.params[0], std::max(1e-4, f.params[1])},
+               model::FallingTerm{f.params[2], std::max(1e-4, f.params[3])}};
+    m.memory_distance_mm = memdst;
+    m.memory_floor_speed_mm_s = mem_s0;
+  }
+  return m;
+}
 
 void check_supported(const CaseRecord& record) {
   const ControlDigits& d = record.digits;
@@ -102,8 +126,11 @@ void check_supported(const CaseRecord& record) {
   if (d.h != 0) not_supported(fmt::format("temperature H={}", d.h));
   if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
   if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
-  if (d.t >= 1 && record.friction.law != 0)
+  if (d.t >= 1 && record.friction.law == 6)
     not_supported(fmt::format("friction law L={}", record.friction.law));
+  if (record.friction.law != 0 && d.t >= 1 && (d.m == 2 || d.m == 3 || d.m == 5))
+    not_supported(
+        fmt::format("friction law L={} with the simplified theory M={}", record.friction.law, d.m));
   if (record.potential.ipotcn == -6) not_supported("SDEC potential contact IPOTCN=-6");
 }
 
@@ -114,7 +141,8 @@ model::PatchProblem to_patch_problem(const CaseRecord& record) {
   p.potential = record.potential;
   p.gap = record.geometry;
   p.bodies = bodies_of(record);
-  p.friction = {record.friction.fstat, record.friction.fkin};
+  const Friction& f = record.friction;
+  p.friction = to_model_friction(f.law, {f.fstat, f.fkin, f.params}, f.memdst, f.mem_s0);
   p.normal = normal_of(record);
   p.tangential = tangential_of(record);
   p.rolling = {record.kinematics.chi, record.kinematics.dq, record.kinematics.veloc,

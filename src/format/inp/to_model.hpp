@@ -11,6 +11,10 @@ namespace rollcontact::format {
 /// solvers do not implement yet; returns normally otherwise.
 void check_supported(const CaseRecord& record);
 
+/// The friction law L with one parameter set and the memory line as the model's Friction.
+model::Friction to_model_friction(int law, const FrictionValues& values, double memdst,
+                                  double mem_s0);
+
 /// The physics of `record` as a PatchProblem. Calls check_supported() first.
 model::PatchProblem to_patch_problem(const CaseRecord& record);
 

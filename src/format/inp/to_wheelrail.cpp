@@ -116,7 +116,8 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
                                            : model::FrictionVariation::Along::TrackPosition;
     p.friction_variation.positions = vf.positions;
     for (const FrictionValues& f : vf.sets)
-      p.friction_variation.values.push_back({f.fstat, f.fkin});
+      p.friction_variation.values.push_back(
+          to_model_friction(r.friction.law, f, r.friction.memdst, r.friction.mem_s0));
   }
   return p;
 }

@@ -119,8 +119,13 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   EXPECT_EQ(message_of(r), "not supported yet: material model M=4");
   r = basic_record();
   r.digits.t = 2;
+  r.friction.law = 6;
+  EXPECT_EQ(message_of(r), "not supported yet: friction law L=6");
+  r = basic_record();
+  r.digits.t = 3;
+  r.digits.m = 3;
   r.friction.law = 4;
-  EXPECT_EQ(message_of(r), "not supported yet: friction law L=4");
+  EXPECT_EQ(message_of(r), "not supported yet: friction law L=4 with the simplified theory M=3");
   r = basic_record();
   r.digits.h = 3;
   EXPECT_EQ(message_of(r), "not supported yet: temperature H=3");
@@ -131,6 +136,28 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r.potential.ipotcn = -6;
   EXPECT_EQ(message_of(r), "not supported yet: SDEC potential contact IPOTCN=-6");
   EXPECT_EQ(message_of(basic_record()), "(accepted)");
+}
+
+TEST(ToModel, FallingFrictionBecomesTheModelsLaw) {
+  // L=4 line FKIN FEXP1 SABSH1 FEXP2 SABSH2 and the memory line; SABSH below 1e-4 mm/s is
+  // raised to it as CONTACT does (veldep_fric prints SABSH2 = 0.1E-03 for an input 0).
+  CaseRecord r = basic_record();
+  r.digits.t = 3;
+  r.friction.law = 4;
+  r.friction.fkin = 0.18;
+  r.friction.params = {0.12, 100.0, 0.0, 0.0};
+  r.friction.fstat = 0.30;
+  r.friction.memdst = 0.003;
+  r.friction.mem_s0 = 1.0;
+  const model::PatchProblem p = to_patch_problem(r);
+  EXPECT_EQ(p.friction.law, model::FrictionLawKind::ExponentialFalling);
+  EXPECT_DOUBLE_EQ(p.friction.static_coefficient, 0.30);
+  EXPECT_DOUBLE_EQ(p.friction.kinetic_coefficient, 0.18);
+  EXPECT_DOUBLE_EQ(p.friction.terms[0].coefficient, 0.12);
+  EXPECT_DOUBLE_EQ(p.friction.terms[0].speed_mm_s, 100.0);
+  EXPECT_DOUBLE_EQ(p.friction.terms[1].speed_mm_s, 1e-4);
+  EXPECT_DOUBLE_EQ(p.friction.memory_distance_mm, 0.003);
+  EXPECT_DOUBLE_EQ(p.friction.memory_floor_speed_mm_s, 1.0);
 }
 
 TEST(ToModel, EveryRepositoryExampleConverts) {

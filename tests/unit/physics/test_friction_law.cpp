@@ -1,6 +1,9 @@
-// Coulomb's law as the model describes it: g = μ_s·p_n, zero bound where there is no pressure.
+// Coulomb's law as the model describes it: g = μ_s·p_n, zero bound where there is no pressure;
+// and the falling laws L = 2, 3, 4 of physics.md §10.1 at their characteristic slip velocities.
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "physics/friction_law.hpp"
 
@@ -26,6 +29,55 @@ TEST(FrictionLaw, CoulombBoundIsStaticCoefficientTimesPressure) {
 TEST(FrictionLaw, FrictionlessContactHasNoBound) {
   const CoulombLaw law(0.0);
   EXPECT_EQ(law.traction_bound(1234.0), 0.0);
+}
+
+}  // namespace
+}  // namespace rollcontact::physics
+
+namespace rollcontact::physics {
+namespace {
+
+model::Friction falling(model::FrictionLawKind kind, double fkin, double f1, double s1, double f2,
+                        double s2) {
+  model::Friction f;
+  f.law = kind;
+  f.kinetic_coefficient = fkin;
+  f.terms = {model::FallingTerm{f1, s1}, model::FallingTerm{f2, s2}};
+  return f;
+}
+
+TEST(FallingFriction, StaticValueIsTheSumOfTheTerms) {
+  // physics.md §10.1: μ(0) = FKIN + F1 + F2 for every falling law; it scales FX/FSTAT/FN.
+  for (const auto kind :
+       {model::FrictionLawKind::LinearFalling, model::FrictionLawKind::RationalFalling,
+        model::FrictionLawKind::ExponentialFalling}) {
+    const auto law = make_friction_law(falling(kind, 0.18, 0.12, 100.0, 0.05, 10.0));
+    EXPECT_TRUE(law->velocity_dependent());
+    EXPECT_NEAR(law->coefficient(), 0.35, 1e-15);
+    EXPECT_NEAR(law->coefficient_at(0.0), 0.35, 1e-15);
+    EXPECT_NEAR(law->traction_bound(100.0), 35.0, 1e-12);
+  }
+}
+
+TEST(FallingFriction, EachLawAtItsCharacteristicSpeeds) {
+  using K = model::FrictionLawKind;
+  // Exponential: halves at SABSH, quarters at 2·SABSH.
+  const auto e = make_friction_law(falling(K::ExponentialFalling, 0.18, 0.12, 100.0, 0.0, 1e-4));
+  EXPECT_NEAR(e->coefficient_at(100.0), 0.18 + 0.06, 1e-15);
+  EXPECT_NEAR(e->coefficient_at(200.0), 0.18 + 0.03, 1e-15);
+  EXPECT_NEAR(e->coefficient_at(1e9), 0.18, 1e-15);
+  // Linear: half at SABSH, FKIN from 2·SABSH on.
+  const auto l = make_friction_law(falling(K::LinearFalling, 0.2, 0.1, 50.0, 0.0, 1e-4));
+  EXPECT_NEAR(l->coefficient_at(50.0), 0.25, 1e-15);
+  EXPECT_NEAR(l->coefficient_at(100.0), 0.2, 1e-15);
+  EXPECT_NEAR(l->coefficient_at(500.0), 0.2, 1e-15);
+  // Rational: F1/(1 + s/S1) and F2/(1 + (s/S2)²), both half at their speed.
+  const auto r = make_friction_law(falling(K::RationalFalling, 0.18, 0.06, 100.0, 0.06, 0.3162));
+  EXPECT_NEAR(r->coefficient_at(100.0), 0.18 + 0.03 + 0.06 / (1.0 + std::pow(100.0 / 0.3162, 2)),
+              1e-15);
+  // Monotonically falling.
+  for (double s = 0.0; s < 1000.0; s += 7.0)
+    EXPECT_GE(e->coefficient_at(s), e->coefficient_at(s + 7.0));
 }
 
 }  // namespace

@@ -1,0 +1,119 @@
+// Velocity-dependent friction (physics.md §10.2-10.3): the memory relaxation along a row, the
+// fixed point on slip velocities reducing to Coulomb's law for a flat law, full sliding at the
+// friction of the rigid slip velocity, and a fixed point cut short reported as not converged.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "contact/slip_velocity_iteration.hpp"
+#include "physics/friction_law.hpp"
+#include "rollcontact/solve.hpp"
+#include "support/hertz_problem.hpp"
+
+namespace rollcontact {
+namespace {
+
+model::Friction exponential(double fkin, double f1, double s1_mm_s) {
+  model::Friction f;
+  f.law = model::FrictionLawKind::ExponentialFalling;
+  f.kinetic_coefficient = fkin;
+  f.terms = {model::FallingTerm{f1, s1_mm_s}, model::FallingTerm{0.0, 1e-4}};
+  f.static_coefficient = fkin + f1;
+  return f;
+}
+
+TEST(FrictionMemory, RelaxesGeometricallyFromTheLeadingEdge) {
+  // Constant slip velocity along a row: μ′ of the leading element is μ_static, each next one
+  // relaxes from its upstream neighbour, so μ_k − μ(s) = θ^(k+1)·(μ_static − μ(s)).
+  const Grid grid{5, 1, -2.5, -0.5, 1.0, 1.0};
+  const std::vector<char> contact(5, 1);
+  const model::Friction f = exponential(0.18, 0.12, 100.0);
+  const auto law = physics::make_friction_law(f);
+  contact::FrictionMemoryInput in;
+  in.grid = &grid;
+  in.contact = &contact;
+  in.law = law.get();
+  in.memory_distance_mm = 0.003;
+  in.memory_floor_speed_mm_s = 1.0;
+  in.dt_s = 1e-4;
+  in.steady = true;
+  const double s = 50.0;
+  const contact::FrictionField field = contact::friction_with_memory(in, std::vector(5, s));
+  const double theta = 0.003 / (0.003 + 1e-4 * s), mu_s = law->coefficient_at(s);
+  for (int k = 0; k < 5; ++k) {  // χ = 0: the leading edge is at the highest ix
+    const double expected = mu_s + std::pow(theta, k + 1) * (0.30 - mu_s);
+    EXPECT_NEAR(field.mu[static_cast<std::size_t>(4 - k)], expected, 1e-15) << k;
+  }
+  // Without memory μ is the law's value everywhere.
+  in.memory_distance_mm = 0.0;
+  for (double mu : contact::friction_with_memory(in, std::vector(5, s)).mu)
+    EXPECT_NEAR(mu, mu_s, 1e-15);
+}
+
+model::PatchProblem steady_case(const model::Friction& f, double cksi) {
+  model::PatchProblem p = test::hertz_problem(0.6, 1.0, 1000.0, 82000.0, 0.28, 24, 30, 1.1);
+  p.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.rolling.velocity_mm_per_s = 1000.0;
+  p.rolling.step_mm = 2.0 * 1.1 * 0.6 / 24;
+  p.tangential.creepage.longitudinal = cksi;
+  p.friction = f;
+  p.solver.tolerance = 1e-9;
+  return p;
+}
+
+TEST(VelocityDependentFriction, FlatLawIsCoulombsLaw) {
+  // F1 = F2 = 0: μ(s_a) = FKIN everywhere, so the fixed point must give Coulomb's solution.
+  const double cksi = 4e-4;  // partial slip
+  PatchSolver a, b;
+  const Solution coulomb = a.solve(steady_case(model::Friction{0.3, 0.3}, cksi));
+  const Solution flat = b.solve(steady_case(exponential(0.3, 0.0, 100.0), cksi));
+  ASSERT_TRUE(coulomb.solver.converged && flat.solver.converged) << flat.solver.message;
+  EXPECT_GT(coulomb.statistics.nslip, 0);
+  EXPECT_GT(coulomb.statistics.nadh, 0);
+  EXPECT_NEAR(flat.totals.fx, coulomb.totals.fx, 1e-7 * coulomb.totals.fn);
+  EXPECT_LE(flat.solver.slip_velocity_passes, 3);
+}
+
+TEST(VelocityDependentFriction, FullSlidingTakesTheFrictionOfTheRigidSlipVelocity) {
+  // ξ = 0.2 at V = 1000 mm/s: everything slides at s_a ≈ ξV = 200 mm/s (the elastic part of the
+  // slip is about μ p₀/G ≈ 0.5 % of ξ), so FX ≈ −μ(ξV)·FN = −(0.18 + 0.12/4)·FN, well below the
+  // static 0.30 and the kinetic 0.18 bounds of the law.
+  const model::Friction f = exponential(0.18, 0.12, 100.0);
+  PatchSolver s;
+  const Solution sol = s.solve(steady_case(f, 0.2));
+  ASSERT_TRUE(sol.solver.converged) << sol.solver.message;
+  EXPECT_EQ(sol.statistics.nadh, 0);
+  EXPECT_NEAR(-sol.totals.fx / sol.totals.fn, 0.21, 0.21 * 5e-3);
+  ASSERT_EQ(sol.mu.size(), sol.grid.size());
+  for (std::size_t i = 0; i < sol.mu.size(); ++i) {
+    if (sol.pn[i] > 0.0) {
+      EXPECT_NEAR(sol.mu[i], 0.21, 0.21 * 1e-2);
+    }
+  }
+  // A falling creep curve: more creepage, less force.
+  PatchSolver s2;
+  const Solution faster = s2.solve(steady_case(f, 0.4));
+  ASSERT_TRUE(faster.solver.converged);
+  EXPECT_LT(-faster.totals.fx, -sol.totals.fx);
+}
+
+TEST(VelocityDependentFriction, FixedPointCutShortIsNotConverged) {
+  // Partial slip from zero slip velocity needs several passes; one pass must not be reported
+  // as a solution.
+  model::PatchProblem p = steady_case(exponential(0.18, 0.12, 100.0), 1e-3);
+  p.solver.max_slip_velocity_passes = 1;
+  PatchSolver s;
+  const Solution sol = s.solve(p);
+  EXPECT_FALSE(sol.solver.converged);
+  EXPECT_NE(sol.solver.message.find("slip-velocity iteration"), std::string::npos);
+  p.solver.max_slip_velocity_passes = 90;
+  PatchSolver s2;
+  const Solution full = s2.solve(p);
+  EXPECT_TRUE(full.solver.converged) << full.solver.message;
+  EXPECT_GT(full.solver.slip_velocity_passes, 1);
+}
+
+}  // namespace
+}  // namespace rollcontact
