@@ -17,6 +17,9 @@ struct CombinedMaterial {
   double g = 0.0;   ///< combined shear modulus G [N/mm²]
   double nu = 0.0;  ///< combined Poisson ratio ν [-]
   double k = 0.0;   ///< difference parameter K [-] (0 for quasi-identical bodies)
+  /// Tangential compliance of an interfacial layer h/G₃ [mm³/N] (M=4), added to the diagonal
+  /// of the tangential influence coefficients; 0 without a layer.
+  double layer_compliance = 0.0;
 };
 
 /// Hertz solution used for Hertzian potential-contact options (IPOTCN < 0).
@@ -132,6 +135,10 @@ struct Solution {
   std::vector<double> sx, sy;      ///< slip (velocity / δq, or distance for T=1)
   /// Coefficient of friction per element in effect (velocity-dependent laws only, else empty).
   std::vector<double> mu;
+  /// Interfacial layer with plasticity (M=4, TAU_C0 > 0), else empty: the yield limit τ_c
+  /// [N/mm²], the plastic displacement (u_pl,x, u_pl,y) [mm] and its accumulated length u*_pl
+  /// [mm], all carried to the next case of a sequence.
+  std::vector<double> yield_limit, plastic_x, plastic_y, plastic_accumulated;
   std::vector<ElementState> state;
   EffectiveKinematics kinematics;
   Sensitivities sensitivities;

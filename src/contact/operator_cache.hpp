@@ -56,7 +56,8 @@ struct OperatorKey {
   friend bool operator==(const OperatorKey& a, const OperatorKey& b) noexcept {
     return a.grid.mx == b.grid.mx && a.grid.my == b.grid.my && a.grid.dx == b.grid.dx &&
            a.grid.dy == b.grid.dy && a.material.g == b.material.g &&
-           a.material.nu == b.material.nu && a.material.k == b.material.k && a.kind == b.kind &&
+           a.material.nu == b.material.nu && a.material.k == b.material.k &&
+           a.material.layer_compliance == b.material.layer_compliance && a.kind == b.kind &&
            a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
            elastic::same_interaction(a.interaction, b.interaction);
   }

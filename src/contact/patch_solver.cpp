@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "contact/force_iteration.hpp"
+#include "contact/interfacial_layer.hpp"
 #include "contact/patch_solver_impl.hpp"
 #include "contact/result_check.hpp"
 #include "contact/slip_velocity_iteration.hpp"
@@ -39,10 +40,11 @@ using Field = std::vector<double>;
 struct PreviousFields {
   bool present = false;
   Field px, py, pn;
-  Field ux, uy;        ///< displacements (transient Fastsim)
-  Field sx, sy;        ///< slip per δq (T=1: per step)
-  Field mu;            ///< velocity-dependent friction: μ per element (else empty)
-  double veloc = 1.0;  ///< rolling velocity [mm/s] of the previous case
+  Field ux, uy;                     ///< displacements (transient Fastsim)
+  Field sx, sy;                     ///< slip per δq (T=1: per step)
+  Field mu;                         ///< velocity-dependent friction: μ per element (else empty)
+  contact::PlasticHistory plastic;  ///< interfacial layer with plasticity (else empty)
+  double veloc = 1.0;               ///< rolling velocity [mm/s] of the previous case
 };
 
 PreviousFields map_previous(const Solution* prev, const Grid& grid) {
@@ -59,6 +61,12 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid) {
   out.veloc = prev->kinematics.veloc;
   const bool has_mu = prev->mu.size() == prev->grid.size();
   if (has_mu) out.mu.assign(n, -1.0);  // -1: not known here (μ_static)
+  const bool has_plastic = prev->plastic_accumulated.size() == prev->grid.size();
+  if (has_plastic) {
+    out.plastic.x.assign(n, 0.0);
+    out.plastic.y.assign(n, 0.0);
+    out.plastic.accumulated.assign(n, 0.0);
+  }
   const Grid& old = prev->grid;
   if (std::abs(old.dx - grid.dx) > 1e-6 * grid.dx || std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
     return out;
@@ -84,6 +92,11 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid) {
         out.sy[i] = prev->sy[j];
       }
       if (has_mu) out.mu[i] = prev->mu[j];
+      if (has_plastic) {
+        out.plastic.x[i] = prev->plastic_x[j];
+        out.plastic.y[i] = prev->plastic_y[j];
+        out.plastic.accumulated[i] = prev->plastic_accumulated[j];
+      }
     }
   }
   out.present = true;
@@ -255,6 +268,9 @@ class CaseSolver {
                                                 const Field* mu = nullptr);
   /// The exact tangential problem with a velocity-dependent friction law: the slip-velocity
   /// fixed point of physics.md §10.3 around solve_tangential(); tractions start from px, py.
+  /// The solver for `sys` (physics.md §9.1), started from px0, py0.
+  tangential::TangentialResult run_tangential_solver(const tangential::TangentialSystem& sys,
+                                                     const Field* px0, const Field* py0);
   tangential::TangentialResult solve_velocity_dependent(double cksi, double ceta, double cphi,
                                                         const Field& px, const Field& py);
   void assemble_slip_at_zero_traction(tangential::TangentialSystem& sys, double cksi, double ceta,
@@ -275,7 +291,9 @@ class CaseSolver {
   Field simplified_ux_, simplified_uy_;
   std::unique_ptr<physics::FrictionLaw> friction_;
   PreviousFields prev_;
-  Field mu_;  ///< velocity-dependent friction: μ per element of the last solve
+  Field mu_;                    ///< velocity-dependent friction: μ per element of the last solve
+  bool layer_plastic_ = false;  ///< M=4 with TAU_C0 > 0
+  contact::PlasticHistory plastic_history_;
   TangentialOperators* tops_ = nullptr;
   std::vector<std::string> notes_;
 };
@@ -569,7 +587,6 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
                                                           const Field* mu) {
   using namespace tangential;
   const std::size_t n = grid_.size();
-  const model::TangentialKind kind = problem_.tangential.kind;
   TangentialSystem sys;
   sys.grid = grid_;
   sys.chi = sol_.kinematics.chi;
@@ -584,7 +601,43 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
     friction_->traction_bounds(sol_.pn, sys.bound);
   }
   assemble_slip_at_zero_traction(sys, cksi, ceta, cphi);
+  if (!layer_plastic_) return run_tangential_solver(sys, px0, py0);
 
+  // Interfacial layer with plasticity: bound min(μ·p_n, τ_c). With hardening or softening
+  // (k_τ ≠ 0) τ_c depends on this case's plastic flow: a fixed point on the increments, which
+  // contracts by |k_τ|/(element stiffness), small for any real layer.
+  const model::InterfacialLayer& layer = problem_.bodies.layer;
+  const Field friction_bound = sys.bound;
+  Field increment(n, 0.0);
+  TangentialResult tang;
+  constexpr int max_passes = 50;
+  for (int pass = 1; pass <= max_passes; ++pass) {
+    const Field tau = contact::yield_limits(layer, plastic_history_, increment);
+    for (std::size_t i = 0; i < n; ++i) sys.bound[i] = std::min(friction_bound[i], tau[i]);
+    tang = run_tangential_solver(sys, px0, py0);
+    Field next;
+    contact::mark_plastic_elements(friction_bound, tau, tang, next);
+    double change = 0.0, size = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      change = std::max(change, std::abs(next[i] - increment[i]));
+      size = std::max(size, next[i]);
+    }
+    increment = std::move(next);
+    if (layer.hardening_N_mm3 == 0.0 || !tang.converged ||
+        change <= problem_.solver.tolerance * size)
+      return tang;
+  }
+  tang.converged = false;
+  tang.message = fmt::format(
+      "the yield limit of the hardening layer (K_TAU) did not settle in {} passes", max_passes);
+  return tang;
+}
+
+tangential::TangentialResult CaseSolver::run_tangential_solver(
+    const tangential::TangentialSystem& sys, const Field* px0, const Field* py0) {
+  using namespace tangential;
+  const std::size_t n = grid_.size();
+  const model::TangentialKind kind = problem_.tangential.kind;
   TangentialSettings settings;
   // With prescribed forces the Newton loop stops at |ΔF/(μFN)| ≤ EPS; the tangential solutions
   // it differentiates must be an order more accurate, or their noise stalls it.
@@ -653,6 +706,11 @@ void CaseSolver::run() {
           ? &*st_.previous
           : nullptr;
   prev_ = map_previous(prev, grid_);
+  layer_plastic_ = problem_.bodies.has_layer && problem_.bodies.layer.plastic() && !simplified_;
+  if (layer_plastic_) {
+    plastic_history_ = prev_.plastic;
+    if (plastic_history_.accumulated.empty()) plastic_history_.accumulated.assign(n, 0.0);
+  }
   if (tangential && !simplified_) {
     const auto& k = sol_.kinematics;
     tops_ = &st_.operators.tangential(grid_, sol_.material, kind, k.dq * std::cos(k.chi),
@@ -771,6 +829,8 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   Solution& s = sol_;
   s.px = tang ? tang->px : Field(n, 0.0);
   s.mu = mu_;
+  if (layer_plastic_ && tang != nullptr)
+    contact::record_plastic_state(problem_.bodies.layer, plastic_history_, *tang, s);
   s.py = tang ? tang->py : Field(n, 0.0);
   s.sx.assign(n, 0.0);
   s.sy.assign(n, 0.0);
@@ -815,14 +875,19 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
       if (tang) {
         s.state[i] = tang->state[i];
         // S per step [mm]; reported as relative slip S/δq (T=1: δq = 1, a distance).
+        // (Plastic elements: the work of the layer's flow −S; they do not slide.)
         power += tang->sx[i] * s.px[i] + tang->sy[i] * s.py[i];
-        s.sx[i] = tang->sx[i] / dq;
-        s.sy[i] = tang->sy[i] / dq;
+        if (tang->state[i] != ElementState::Plastic) {
+          s.sx[i] = tang->sx[i] / dq;
+          s.sy[i] = tang->sy[i] / dq;
+        }
       } else {
         s.state[i] = ElementState::Adhesion;  // CONTACT prints '*' without a tangential problem
       }
       if (s.state[i] == ElementState::Slip)
         ++st.nslip;
+      else if (s.state[i] == ElementState::Plastic)
+        ++st.nplast;
       else if (s.state[i] == ElementState::Adhesion)
         ++st.nadh;
     }
@@ -861,6 +926,7 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
   sol.material =
       elastic::combine_materials(b.body1.poisson_ratio, b.body2.poisson_ratio,
                                  b.body1.shear_modulus_N_mm2, b.body2.shear_modulus_N_mm2);
+  if (b.has_layer) sol.material.layer_compliance = b.layer.compliance_mm3_N();
   geometry::Discretisation disc = geometry::build_discretisation(problem, sol.material);
   sol.grid = disc.grid;
   sol.hertz = disc.hertz;

@@ -126,6 +126,25 @@ Kernel::Kernel(int mx, int my) : mx_(mx), my_(my) {
   data_.assign(static_cast<std::size_t>(2 * mx - 1) * static_cast<std::size_t>(2 * my - 1), 0.0);
 }
 
+namespace {
+
+/// An interfacial layer (M=4) shears by (h/G₃)·p_t under its own element only: u_x, u_y get
+/// h/G₃ at the offset whose (shifted) observation point lies in the source element.
+void add_layer_compliance(Component c, const Grid& grid, const CombinedMaterial& material,
+                          double shift_x, double shift_y, Kernel& kernel) {
+  if (material.layer_compliance == 0.0 || (c != Component::xx && c != Component::yy)) return;
+  // dix·dx + shift_x ∈ [−dx/2, dx/2): half-open, so that a point on an element edge belongs to
+  // one element (a rolling step of exactly one element lands on the neighbour's centre).
+  const auto offset = [](double shift, double d) {
+    return static_cast<int>(std::ceil(-0.5 - shift / d - 1e-9));
+  };
+  const int dix = offset(shift_x, grid.dx), diy = offset(shift_y, grid.dy);
+  if (std::abs(dix) < grid.mx && std::abs(diy) < grid.my)
+    kernel.at(dix, diy) += material.layer_compliance;
+}
+
+}  // namespace
+
 Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material, double shift_x,
                    double shift_y) {
   if (!(material.g > 0.0)) throw ProblemError("influence kernel: combined G must be positive");
@@ -169,6 +188,7 @@ Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& materi
     }
     prev.swap(cur);
   }
+  add_layer_compliance(c, grid, material, shift_x, shift_y, kernel);
   // Element sizes far outside what the closed forms can represent (e.g. DX = 1e30 mm) overflow
   // to inf or NaN: reject the grid here rather than report a NaN force later.
   for (double v : kernel.data())

@@ -29,7 +29,7 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
   for (auto it = entries_.begin(); it != entries_.end(); ++it) {
     const Entry& e = *it;
     if (e.c != c || e.dx != grid.dx || e.dy != grid.dy || e.g != m.g || e.nu != m.nu ||
-        e.k != m.k || e.shift_x != shift_x || e.shift_y != shift_y)
+        e.k != m.k || e.layer != m.layer_compliance || e.shift_x != shift_x || e.shift_y != shift_y)
       continue;
     if (e.kernel.mx() >= grid.mx && e.kernel.my() >= grid.my) {
       entries_.splice(entries_.begin(), entries_, it);
@@ -47,7 +47,7 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
   ++computed_;
   if (4 * bytes_for(big.mx, big.my) > budget_bytes_)
     return make_kernel(c, grid, m, shift_x, shift_y);
-  entries_.push_front({c, grid.dx, grid.dy, m.g, m.nu, m.k, shift_x, shift_y,
+  entries_.push_front({c, grid.dx, grid.dy, m.g, m.nu, m.k, m.layer_compliance, shift_x, shift_y,
                        make_kernel(c, big, m, shift_x, shift_y)});
   kept_bytes_ += bytes_of(entries_.front().kernel);
   while (kept_bytes_ > budget_bytes_) {

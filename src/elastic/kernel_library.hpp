@@ -30,7 +30,7 @@ class KernelLibrary {
  private:
   struct Entry {
     Component c;
-    double dx, dy, g, nu, k, shift_x, shift_y;
+    double dx, dy, g, nu, k, layer, shift_x, shift_y;
     Kernel kernel;
   };
   std::size_t budget_bytes_, kept_bytes_ = 0;

@@ -38,11 +38,30 @@ inline double material_difference_k(double nu1, double nu2, double g1, double g2
   return 0.25 * g * ((1.0 - 2.0 * nu1) / g1 - (1.0 - 2.0 * nu2) / g2);
 }
 
+/// An interfacial (third-body) layer between the bodies (CONTACT M=4, physics.md §12): an
+/// elastic shear compliance h/G₃ added to the tangential one, and a yield limit
+/// τ_c = τ_c0 + k_τ·u*_pl on the tangential traction (u*_pl the accumulated plastic slip).
+struct InterfacialLayer {
+  double shear_modulus_N_mm2 = 0.0;  ///< G₃ (GG3) [N/mm²]; ≤ 0 or thickness 0: no compliance
+  double thickness_mm = 0.0;         ///< h (LAYTHK) [mm]
+  double yield_stress_N_mm2 = 0.0;   ///< τ_c0 (TAU_C0) [N/mm²]; ≤ 0: no plasticity
+  double hardening_N_mm3 = 0.0;      ///< k_τ (K_TAU) [N/mm³]; < 0 softening
+
+  /// h/G₃ [mm³/N]: the layer's tangential displacement per unit traction.
+  [[nodiscard]] double compliance_mm3_N() const {
+    return shear_modulus_N_mm2 > 0.0 && thickness_mm > 0.0 ? thickness_mm / shear_modulus_N_mm2
+                                                           : 0.0;
+  }
+  [[nodiscard]] bool plastic() const { return yield_stress_N_mm2 > 0.0; }
+};
+
 struct Bodies {
   ElasticBody body1;  ///< the upper body; tractions act on it
   ElasticBody body2;
   TangentialCompliance compliance = TangentialCompliance::ExactHalfSpace;
   SimplifiedParameters simplified;
+  bool has_layer = false;  ///< CONTACT M=4: the interfacial layer below applies
+  InterfacialLayer layer;
 };
 
 }  // namespace rollcontact::model

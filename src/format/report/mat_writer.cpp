@@ -268,15 +268,24 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution,
       std::string row =
           two_ints(static_cast<long long>(grid.index(ix, iy)) + 1, static_cast<int>(state));
       const double srel = std::hypot(at(solution.sx, i), at(solution.sy, i));
-      for (const double v :
-           {at(solution.h, i), row_friction(problem.friction, source_iy), at(solution.pn, i),
-            at(solution.px, i), lateral * at(solution.py, i), at(solution.un, i),
-            at(solution.ux, i), lateral * at(solution.uy, i), srel}) {
+      // The local μ: the velocity-dependent value where the solver had one.
+      const double mu =
+          i < solution.mu.size() ? solution.mu[i] : row_friction(problem.friction, source_iy);
+      for (const double v : {at(solution.h, i), mu, at(solution.pn, i), at(solution.px, i),
+                             lateral * at(solution.py, i), at(solution.un, i), at(solution.ux, i),
+                             lateral * at(solution.uy, i), srel}) {
         row += g14(v);
       }
-      // Plasticity and temperature fields are not part of the Solution yet: zero columns keep
-      // the layout that the Matlab scripts expect.
-      row += zeros(ncol - 11);
+      int filled = 11;
+      if (plastic && !solution.yield_limit.empty()) {
+        for (const double v : {at(solution.yield_limit, i), at(solution.plastic_x, i),
+                               lateral * at(solution.plastic_y, i)})
+          row += g14(v);
+        filled += 3;
+      }
+      // Temperature fields are not part of the Solution yet: zero columns keep the layout that
+      // the Matlab scripts expect.
+      row += zeros(ncol - filled);
       out += row + "\n";
     }
   }

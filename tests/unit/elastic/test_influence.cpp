@@ -335,3 +335,32 @@ TEST(MakeKernel, DividesByGAndDropsWeakCoupling) {
 
 }  // namespace
 }  // namespace rollcontact::elastic
+
+namespace rollcontact::elastic {
+namespace {
+
+TEST(LayerCompliance, AddsToTheElementUnderTheObservationPointOnly) {
+  // An interfacial layer (M=4) shears by (h/G₃)·p_t under the loaded element alone: the
+  // tangential kernels change by h/G₃ at one offset — (0,0), or the neighbour's offset when the
+  // observation point is moved by one rolling step — and C_nn, C_xy not at all.
+  const Grid grid{6, 5, -3.0, -2.5, 0.5, 0.4};
+  CombinedMaterial plain{82000.0, 0.28, 0.0}, layered = plain;
+  layered.layer_compliance = 0.02 / 176.63;
+  for (const double shift : {0.0, 0.5, -0.5}) {
+    const int expected_dix = shift > 0 ? -1 : shift < 0 ? 1 : 0;
+    for (const Component c : {Component::xx, Component::yy, Component::xy, Component::nn}) {
+      const Kernel a = make_kernel(c, grid, plain, shift, 0.0);
+      const Kernel b = make_kernel(c, grid, layered, shift, 0.0);
+      for (int diy = -(grid.my - 1); diy < grid.my; ++diy)
+        for (int dix = -(grid.mx - 1); dix < grid.mx; ++dix) {
+          const bool diagonal = c == Component::xx || c == Component::yy;
+          const double added =
+              diagonal && dix == expected_dix && diy == 0 ? layered.layer_compliance : 0.0;
+          EXPECT_NEAR(b.at(dix, diy) - a.at(dix, diy), added, 1e-18) << dix << ' ' << diy;
+        }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rollcontact::elastic
