@@ -261,6 +261,7 @@ class CaseSolver {
   /// FN [N]: the sum of the pressures (also KPEC, ANALYN), or the prescribed force itself with
   /// B=2,3 (whose discrete pressures sum to FN only up to the discretisation error).
   double total_normal_force() const;
+  /// Fastsim/FaStrip; a velocity-dependent law is solved element by element inside Fastsim.
   tangential::TangentialResult solve_simplified(double cksi, double ceta, double cphi);
   /// `mu`: the coefficient per element (velocity-dependent friction), nullptr: the law's bound.
   tangential::TangentialResult solve_tangential(double cksi, double ceta, double cphi,
@@ -419,6 +420,13 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
   c.g = sol_.material.g;
   c.nu = sol_.material.nu;
   c.mu = friction_->coefficient();
+  simplified::FastsimVelocityFriction velocity;
+  if (friction_->velocity_dependent()) {
+    velocity = {friction_.get(), problem_.friction.memory_distance_mm,
+                problem_.friction.memory_floor_speed_mm_s, sol_.kinematics.dt};
+    c.velocity = &velocity;
+    if (kind == model::TangentialKind::TransientRolling) c.mu_prev = prev_.mu;
+  }
   c.fn = total_normal_force();
   c.model = simplified::simplified_model(problem_);
   c.creepages = {cksi, ceta, cphi};
@@ -453,6 +461,7 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
   res.converged = true;  // a direct method: one pass
   simplified_ux_ = std::move(r.fields.ux);
   simplified_uy_ = std::move(r.fields.uy);
+  mu_ = std::move(r.fields.mu);
   return res;
 }
 

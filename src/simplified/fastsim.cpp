@@ -2,25 +2,56 @@
 
 #include "simplified/fastsim.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rollcontact::simplified {
 
 namespace {
 
-/// Solves one element given the displacement u′ of its particles one step earlier; returns the
-/// element's displacement u.
+/// μ of an element after memory: θ·μ′ + (1 − θ)·μ(s) with θ = d_c/(d_c + δt·max(s, s₀)).
+double relaxed_mu(const FastsimVelocityFriction& v, double mu_prime, double speed) {
+  const double dc = v.memory_distance_mm;
+  const double theta =
+      dc <= 1e-9 ? 0.0 : dc / (dc + v.dt_s * std::max(speed, v.memory_floor_speed_mm_s));
+  return theta * mu_prime + (1.0 - theta) * v.law->coefficient_at(speed);
+}
+
+/// The slip bound g of an element whose adhesion trial traction has magnitude `trial` > g₀
+/// (the adhesion bound) and whose trial displacement L·p has magnitude `trial_u` [mm]:
+/// g = p_n·μ(s(g)), s(g) = (1 − g/trial)·trial_u/δt. Iterated from g₀ downwards: μ rises with
+/// g, so the iterates fall monotonically to the largest root.
+double velocity_bound(const FastsimVelocityFriction& v, double pn, double mu_prime, double trial,
+                      double trial_u, double g0) {
+  double g = g0;
+  for (int k = 0; k < 1000; ++k) {
+    const double speed = (1.0 - g / trial) * trial_u / v.dt_s;
+    const double next = pn * relaxed_mu(v, mu_prime, speed);
+    const bool settled = std::abs(next - g) <= 1e-13 * g0;
+    g = next;
+    if (settled) break;
+  }
+  return g;
+}
+
+/// Solves one element given the displacement u′ of its particles one step earlier (and μ′ for
+/// velocity-dependent friction); returns the element's displacement u and μ.
 struct ElementOutcome {
-  double ux, uy;
+  double ux, uy, mu;
 };
 
 ElementOutcome solve_element(const FastsimInput& in, std::size_t i, double upx, double upy,
-                             SimplifiedFields& out) {
-  const double bound = in.mu * in.pn[i];
+                             double mu_prime, SimplifiedFields& out) {
+  double mu = in.velocity != nullptr ? relaxed_mu(*in.velocity, mu_prime, 0.0) : in.mu;
+  double bound = mu * in.pn[i];
   double ux = upx - in.wx[i], uy = upy - in.wy[i];  // adhesion: S = u − u′ + W = 0
   double px = ux / in.flex.l1, py = uy / in.flex.l2;
   const double norm = std::hypot(px, py);
   if (norm > bound) {
+    if (in.velocity != nullptr) {
+      bound = velocity_bound(*in.velocity, in.pn[i], mu_prime, norm, std::hypot(ux, uy), bound);
+      mu = bound / in.pn[i];
+    }
     const double f = bound / norm;
     px *= f;
     py *= f;
@@ -36,7 +67,8 @@ ElementOutcome solve_element(const FastsimInput& in, std::size_t i, double upx, 
   out.py[i] = py;
   out.ux[i] = ux;
   out.uy[i] = uy;
-  return {ux, uy};
+  if (!out.mu.empty()) out.mu[i] = mu;
+  return {ux, uy, mu};
 }
 
 }  // namespace
@@ -52,21 +84,25 @@ SimplifiedFields fastsim(const FastsimInput& in) {
   out.sx.assign(n, 0.0);
   out.sy.assign(n, 0.0);
   out.state.assign(n, ElementState::Exterior);
+  const double mu_static = in.velocity != nullptr ? in.velocity->law->coefficient() : in.mu;
+  if (in.velocity != nullptr) out.mu.assign(n, mu_static);
   if (in.steady) {
     // Particles enter at the leading edge unloaded and move one element per step (δq = δx).
     const bool forward = std::cos(in.chi) >= 0.0;
     for (int iy = 0; iy < grid.my; ++iy) {
-      double upx = 0.0, upy = 0.0;
+      double upx = 0.0, upy = 0.0, mu_prime = mu_static;
       for (int k = 0; k < grid.mx; ++k) {
         const int ix = forward ? grid.mx - 1 - k : k;
         const std::size_t i = grid.index(ix, iy);
         if (!(in.pn[i] > 0.0)) {
           upx = upy = 0.0;
+          mu_prime = mu_static;
           continue;
         }
-        const ElementOutcome e = solve_element(in, i, upx, upy, out);
+        const ElementOutcome e = solve_element(in, i, upx, upy, mu_prime, out);
         upx = e.ux;
         upy = e.uy;
+        mu_prime = e.mu;
       }
     }
     return out;
@@ -74,7 +110,10 @@ SimplifiedFields fastsim(const FastsimInput& in) {
   const bool has_prev = in.ux_prev.size() == n && in.uy_prev.size() == n;
   for (std::size_t i = 0; i < n; ++i) {
     if (!(in.pn[i] > 0.0)) continue;
-    solve_element(in, i, has_prev ? in.ux_prev[i] : 0.0, has_prev ? in.uy_prev[i] : 0.0, out);
+    const double mu_prime =
+        in.mu_prev.size() == n && in.mu_prev[i] >= 0.0 ? in.mu_prev[i] : mu_static;
+    solve_element(in, i, has_prev ? in.ux_prev[i] : 0.0, has_prev ? in.uy_prev[i] : 0.0, mu_prime,
+                  out);
   }
   return out;
 }

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "physics/friction_law.hpp"
 #include "rollcontact/grid.hpp"
 #include "rollcontact/solution.hpp"
 #include "simplified/flexibility.hpp"
@@ -18,6 +19,17 @@ struct SimplifiedFields {
   std::vector<double> ux, uy;  ///< displacement differences u = L·p [mm]
   std::vector<double> sx, sy;  ///< slip per step S = u − u′ + W [mm]
   std::vector<ElementState> state;
+  std::vector<double> mu;  ///< velocity-dependent friction: μ per element (else empty)
+};
+
+/// Friction that falls with the slip velocity, with memory (physics.md §10.1-10.2). Fastsim
+/// solves it element by element: an element's slip depends on its own traction and on what
+/// came from upstream only, so μ(s_a) is a scalar equation per element, not an outer loop.
+struct FastsimVelocityFriction {
+  const physics::FrictionLaw* law = nullptr;
+  double memory_distance_mm = 0.0;       ///< d_c (MEMDST)
+  double memory_floor_speed_mm_s = 0.0;  ///< s₀ (MEM_S0)
+  double dt_s = 1.0;                     ///< time step δq/V [s]
 };
 
 struct FastsimInput {
@@ -30,10 +42,17 @@ struct FastsimInput {
   double chi = 0.0;  ///< rolling direction [rad]; steady: cos χ > 0 sweeps from ix = MX−1 down
   /// Transient rolling: displacement of the same particles at the previous time [mm] (empty: 0).
   std::span<const double> ux_prev, uy_prev;
+  /// Velocity-dependent friction (nullptr: the bound μ·p_n); in transient rolling μ′ is
+  /// mu_prev (previous time, empty: μ_static), in steady rolling the upstream element's μ.
+  const FastsimVelocityFriction* velocity = nullptr;
+  std::span<const double> mu_prev;
 };
 
 /// One Fastsim pass. Per contact element: adhesion trial u = u′ − W, p = u/L; if |p| > μp_n the
-/// element slips with p scaled onto the bound and u = L·p. Exterior elements get zeros.
+/// element slips with p scaled onto the bound and u = L·p. Exterior elements get zeros. With
+/// velocity-dependent friction the bound is g = p_n·μ(|S|/δt) with memory, S = (g/|p| − 1)·L·p
+/// for the trial p: the largest such g below the adhesion bound (the fixed point reached from
+/// zero slip velocity).
 SimplifiedFields fastsim(const FastsimInput& in);
 
 /// Displacement of the same particles one step earlier for transient rolling: `u` (previous

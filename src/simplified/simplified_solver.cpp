@@ -84,6 +84,8 @@ SimplifiedOutcome solve_simplified(const SimplifiedCase& c) {
   in.grid = c.grid;
   in.pn = c.pn;
   in.mu = c.mu;
+  in.velocity = c.velocity;
+  in.mu_prev = c.mu_prev;
   in.wx = wx;
   in.wy = wy;
   in.flex = eff;

@@ -46,7 +46,11 @@ struct SimplifiedCase {
   Ellipse ellipse;
   double g = 0.0, nu = 0.0;  ///< combined material [N/mm², -]
   double mu = 0.3;           ///< friction coefficient [-]
-  double fn = 0.0;           ///< total normal force [N]
+  /// Velocity-dependent friction (Fastsim only; nullptr: Coulomb with `mu`), with μ of the
+  /// previous time for transient rolling (empty: μ_static).
+  const FastsimVelocityFriction* velocity = nullptr;
+  std::span<const double> mu_prev;
+  double fn = 0.0;  ///< total normal force [N]
   SimplifiedModel model;
   Creepages creepages;
   const RigidShiftParts* shift = nullptr;    ///< for these creepages

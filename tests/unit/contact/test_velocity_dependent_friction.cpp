@@ -115,5 +115,51 @@ TEST(VelocityDependentFriction, FixedPointCutShortIsNotConverged) {
   EXPECT_GT(full.solver.slip_velocity_passes, 1);
 }
 
+model::PatchProblem fastsim_case(const model::Friction& f, double cksi) {
+  model::PatchProblem p = steady_case(f, cksi);
+  p.bodies.compliance = model::TangentialCompliance::FastsimThreeFlexibilities;
+  return p;
+}
+
+TEST(VelocityDependentFastsim, FlatLawIsCoulombsLaw) {
+  for (const double cksi : {2e-4, 1e-3, 0.05}) {
+    PatchSolver a, b;
+    const Solution coulomb = a.solve(fastsim_case(model::Friction{0.3, 0.3}, cksi));
+    const Solution flat = b.solve(fastsim_case(exponential(0.3, 0.0, 100.0), cksi));
+    ASSERT_TRUE(coulomb.solver.converged && flat.solver.converged);
+    EXPECT_NEAR(flat.totals.fx, coulomb.totals.fx, 1e-12 * coulomb.totals.fn) << cksi;
+  }
+}
+
+TEST(VelocityDependentFastsim, EachSlipElementSitsOnTheLawAtItsOwnSlipVelocity) {
+  // Without memory μ_I = μ(|S_I|/δt) exactly in every slipping element, |p| = μ_I·p_n there,
+  // and adhering elements keep μ_static; full sliding at ξ = 0.2 gives FX ≈ −μ(ξV)·FN.
+  const model::Friction f = exponential(0.18, 0.12, 100.0);
+  const auto law = physics::make_friction_law(f);
+  for (const double cksi : {1e-3, 0.2}) {
+    PatchSolver s;
+    const Solution sol = s.solve(fastsim_case(f, cksi));
+    ASSERT_TRUE(sol.solver.converged);
+    ASSERT_EQ(sol.mu.size(), sol.grid.size());
+    int slipping = 0;
+    for (std::size_t i = 0; i < sol.mu.size(); ++i) {
+      if (sol.pn[i] <= 0.0) continue;
+      const double speed = std::hypot(sol.sx[i], sol.sy[i]) * sol.kinematics.veloc;
+      if (sol.state[i] == ElementState::Slip) {
+        ++slipping;
+        EXPECT_NEAR(sol.mu[i], law->coefficient_at(speed), 1e-10);
+        EXPECT_NEAR(std::hypot(sol.px[i], sol.py[i]), sol.mu[i] * sol.pn[i], 1e-9 * sol.pn[i]);
+      } else {
+        EXPECT_DOUBLE_EQ(sol.mu[i], 0.30);
+      }
+    }
+    EXPECT_GT(slipping, 0);
+    if (cksi == 0.2) {
+      EXPECT_EQ(sol.statistics.nadh, 0);
+      EXPECT_NEAR(-sol.totals.fx / sol.totals.fn, 0.21, 0.21 * 5e-3);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rollcontact

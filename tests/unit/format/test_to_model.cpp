@@ -123,9 +123,11 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   EXPECT_EQ(message_of(r), "not supported yet: friction law L=6");
   r = basic_record();
   r.digits.t = 3;
-  r.digits.m = 3;
+  r.digits.m = 5;
   r.friction.law = 4;
-  EXPECT_EQ(message_of(r), "not supported yet: friction law L=4 with the simplified theory M=3");
+  EXPECT_EQ(
+      message_of(r),
+      "not supported yet: friction law L=4 with the simplified theory M=5 (not yet validated)");
   r = basic_record();
   r.digits.h = 3;
   EXPECT_EQ(message_of(r), "not supported yet: temperature H=3");
