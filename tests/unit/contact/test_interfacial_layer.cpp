@@ -93,5 +93,26 @@ TEST(InterfacialLayer, HardeningRaisesTheLimitWithTheAccumulatedFlow) {
   for (std::size_t k = 2; k < fx.size(); ++k) EXPECT_NEAR(fx[k] - fx[k - 1], slope, 1e-6);
 }
 
+TEST(InterfacialLayer, WithoutComplianceOrYieldLimitItIsNoLayer) {
+  // LAYTHK = 0 and TAU_C0 = 0 (no plasticity): M=4 must equal M=0 bit for bit, in steady rolling
+  // with partial slip on a Hertzian contact.
+  model::PatchProblem p = test::hertz_problem(0.6, 1.0, 1000.0, 82000.0, 0.28, 24, 30, 1.1);
+  p.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.rolling.velocity_mm_per_s = 1000.0;
+  p.rolling.step_mm = 2.0 * 1.1 * 0.6 / 24;
+  p.tangential.creepage = {4e-4, -2e-4, 1e-4};
+  PatchSolver a, b;
+  const Solution bare = a.solve(p);
+  p.bodies.has_layer = true;
+  p.bodies.layer = {kG3, 0.0, 0.0, 0.0};
+  const Solution layered = b.solve(p);
+  ASSERT_TRUE(bare.solver.converged && layered.solver.converged);
+  EXPECT_GT(bare.statistics.nslip, 0);
+  EXPECT_EQ(layered.totals.fx, bare.totals.fx);
+  EXPECT_EQ(layered.totals.fy, bare.totals.fy);
+  EXPECT_EQ(layered.px, bare.px);
+  EXPECT_EQ(layered.statistics.nplast, 0);
+}
+
 }  // namespace
 }  // namespace rollcontact
