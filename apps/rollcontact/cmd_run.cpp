@@ -71,8 +71,16 @@ struct RunSettings {
   int threads = 1;
 };
 
-int run_job(const std::filesystem::path& input, const RunSettings& settings, bool show_picture) {
+int run_job(const std::filesystem::path& input, const RunSettings& settings, bool show_picture,
+            batch::Distribution* distribution = nullptr) {
   batch::RunOptions options;
+  const bool distributed = distribution != nullptr && distribution->size() > 1;
+  if (distributed) {
+    options.distribution = distribution;
+    if (distribution->is_root() && !settings.quiet)
+      fmt::print(stderr, "run: {} MPI processes, one sequence (result element) at a time each{}\n",
+                 distribution->size(), settings.threads > 1 ? "; --threads ignored" : "");
+  }
   options.output_dir = settings.output_dir;
   options.solve.fft = parse_backend(settings.backend);
   options.solve.fft_planning = settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
@@ -88,7 +96,7 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
     if (count > 20 && (k + 1) % 20 == 0) fmt::print(stderr, "  ... {}/{} cases\n", k + 1, count);
   };
   options.threads = settings.threads;
-  if (!quiet && isatty(fileno(stderr))) {
+  if (!quiet && !distributed && isatty(fileno(stderr))) {
     // A progress line on a terminal while the threads work (not in pipes or with -q).
     const auto start = std::chrono::steady_clock::now();
     options.on_progress = [start](std::size_t done, std::size_t count) {
@@ -102,6 +110,10 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
     };
   }
   const auto result = batch::run_input_file(input, options);
+  // Under MPI only the root writes the report and knows the verdict; mpirun's status is the
+  // worst of the processes'.
+  if (distributed && !distribution->is_root()) return exit_ok;
+  if (!quiet && distributed) fmt::print("{} case(s) failed\n", result.failed);
   if (!quiet)
     fmt::print("wrote {} and {}\n", result.report_path.string(), result.json_path.string());
   return result.failed == 0 ? exit_ok : exit_case_failed;
@@ -118,7 +130,7 @@ void add_solver_options(CLI::App* cmd, RunSettings& s) {
 
 }  // namespace
 
-CommandRunner add_run_command(CLI::App& app) {
+CommandRunner add_run_command(CLI::App& app, batch::Distribution& distribution) {
   auto settings = std::make_shared<RunSettings>();
   auto* cmd = app.add_subcommand(
       "run", "Solve every case of a CONTACT .inp file; writes FILE.out (report) and FILE.json");
@@ -133,7 +145,9 @@ CommandRunner add_run_command(CLI::App& app) {
                   "order; the outputs are those of one thread")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  return [settings] { return run_job(settings->input, *settings, false); };
+  return [settings, &distribution] {
+    return run_job(settings->input, *settings, false, &distribution);
+  };
 }
 
 CommandRunner add_example_command(CLI::App& app) {

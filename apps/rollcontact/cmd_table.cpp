@@ -38,7 +38,7 @@ struct TableOptions {
   bool quiet = false;
 };
 
-int run_table_command(const TableOptions& o) {
+int run_table_command(const TableOptions& o, batch::Distribution& distribution) {
   batch::TableSettings settings;
   settings.method = batch::parse_table_method(o.method);
   settings.bound = o.bound;
@@ -50,7 +50,14 @@ int run_table_command(const TableOptions& o) {
   std::vector<batch::TableRow> reference;
   if (!o.reference.empty()) reference = batch::read_table_csv_file(o.reference);
   const std::vector<batch::TableCase> cases = batch::select_table_cases(o.cases);
-  const int threads = batch::default_thread_count(o.threads);
+  const bool distributed = distribution.size() > 1;
+  const bool root = distribution.is_root();
+  // Under MPI every rank is one worker (start as many ranks as cores); threads stay for one
+  // process.
+  const int threads = distributed ? 1 : batch::default_thread_count(o.threads);
+  if (distributed && root && o.threads > 1 && !o.quiet)
+    fmt::print(stderr, "table: --threads {} ignored under MPI: {} processes, one thread each\n",
+               o.threads, distribution.size());
 
   const auto wall0 = std::chrono::steady_clock::now();
   const std::clock_t cpu0 = std::clock();
@@ -61,12 +68,17 @@ int run_table_command(const TableOptions& o) {
     std::fflush(stderr);
   };
   const std::vector<batch::TableRow> rows =
-      batch::run_table(cases, settings, threads,
-                       o.quiet ? std::function<void(std::size_t)>{} : std::function(progress));
+      distributed ? batch::run_table_distributed(cases, settings, distribution)
+                  : batch::run_table(
+                        cases, settings, threads,
+                        o.quiet ? std::function<void(std::size_t)>{} : std::function(progress));
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
-  if (!o.quiet) fmt::print(stderr, "\n");
+  // Only the root writes and reports (mpirun's status is the worst of the processes'); no
+  // collective call follows, so that a root that fails to write cannot leave the others waiting.
+  if (!root) return exit_ok;
+  if (!o.quiet && !distributed) fmt::print(stderr, "\n");
 
   std::ostringstream csv;
   batch::write_table_csv(csv, rows);
@@ -77,10 +89,12 @@ int run_table_command(const TableOptions& o) {
     if (!r.converged) failed.push_back(&r);
   const double n = static_cast<double>(rows.size());
   if (!o.quiet) {
-    fmt::print("table {} (B={}, mx={}, {} threads): {} cases, {} not converged -> {}\n", o.method,
-               bound, settings.mx, threads, rows.size(), failed.size(), o.output);
-    fmt::print("time: wall {:.3f} s, CPU {:.3f} s; per case {:.4g} ms CPU, {:.4g} ms wall\n", wall,
-               cpu, 1e3 * cpu / n, 1e3 * wall / n);
+    const std::string workers = distributed ? fmt::format("{} MPI processes", distribution.size())
+                                            : fmt::format("{} threads", threads);
+    fmt::print("table {} (B={}, mx={}, {}): {} cases, {} not converged -> {}\n", o.method, bound,
+               settings.mx, workers, rows.size(), failed.size(), o.output);
+    fmt::print("time: wall {:.3f} s, CPU {:.3f} s{}; per case {:.4g} ms CPU, {:.4g} ms wall\n",
+               wall, cpu, distributed ? " (root process)" : "", 1e3 * cpu / n, 1e3 * wall / n);
     for (const auto* r : failed)
       fmt::print("  not converged: case {} (a/b {:g}, spin {:g}, angle {:g}, magnitude {:g}): {}\n",
                  r->tc.number, r->tc.a_over_b, r->tc.spin, r->tc.angle_deg, r->tc.magnitude,
@@ -100,7 +114,7 @@ int run_table_command(const TableOptions& o) {
 
 }  // namespace
 
-CommandRunner add_table_command(CLI::App& app) {
+CommandRunner add_table_command(CLI::App& app, batch::Distribution& distribution) {
   auto opts = std::make_shared<TableOptions>();
   CLI::App* cmd = app.add_subcommand(
       "table",
@@ -122,9 +136,10 @@ CommandRunner add_table_command(CLI::App& app) {
                   "CSV of --method exact with the same mx: print error statistics against it");
   cmd->add_option("--stats", opts->stats, "also write the error statistics as Markdown");
   cmd->add_option("--cases", opts->cases, "subset of case numbers, e.g. 1-50,100 (default all)");
-  cmd->add_option("--threads", opts->threads, "worker threads (default: all cores)");
+  cmd->add_option("--threads", opts->threads,
+                  "worker threads (default: all cores); under mpirun each process is one worker");
   cmd->add_flag("-q,--quiet", opts->quiet, "no progress line and no summary");
-  return [opts] { return run_table_command(*opts); };
+  return [opts, &distribution] { return run_table_command(*opts, distribution); };
 }
 
 }  // namespace rollcontact::cli

@@ -9,6 +9,8 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 
+#include "batch/distribution.hpp"
+
 namespace rollcontact::cli {
 
 inline constexpr int exit_ok = 0;
@@ -18,8 +20,9 @@ inline constexpr int exit_internal = 3;
 
 using CommandRunner = std::function<int()>;
 
-/// `rollcontact run FILE.inp`: solve and write FILE.out / FILE.json.
-CommandRunner add_run_command(CLI::App& app);
+/// `rollcontact run FILE.inp`: solve and write FILE.out / FILE.json; under mpirun the
+/// sequences (result elements) are spread over the processes of `distribution`.
+CommandRunner add_run_command(CLI::App& app, batch::Distribution& distribution);
 /// `rollcontact example`: the built-in default example.
 CommandRunner add_example_command(CLI::App& app);
 /// `rollcontact convert IN OUT`: .inp <-> TOML case file (direction from the extensions).
@@ -28,7 +31,8 @@ CommandRunner add_convert_command(CLI::App& app);
 CommandRunner add_validate_command(CLI::App& app);
 /// `rollcontact plot FILE --what ... -o FIG.png`: plots through the Python package.
 CommandRunner add_plot_command(CLI::App& app);
-/// `rollcontact table -o FILE.csv`: the 3220-case creep-force table (Vollebregt et al. 2012).
-CommandRunner add_table_command(CLI::App& app);
+/// `rollcontact table -o FILE.csv`: the 3220-case creep-force table (Vollebregt et al. 2012),
+/// over the processes of `distribution` (several under mpirun).
+CommandRunner add_table_command(CLI::App& app, batch::Distribution& distribution);
 
 }  // namespace rollcontact::cli

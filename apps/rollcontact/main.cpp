@@ -8,11 +8,15 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "process_distribution.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace rollcontact::cli;
+  // First: under mpirun this is MPI_Init (which may edit argc, argv); destroyed last.
+  const auto distribution = make_process_distribution(argc, argv);
+  const bool root = distribution->is_root();
   CLI::App app{
       "rollcontact: rolling and sliding contact between elastic bodies (CONTACT-compatible, "
       "Kalker's exact half-space theory)"};
@@ -24,24 +28,23 @@ int main(int argc, char** argv) {
       "error.");
 
   std::vector<std::pair<CLI::App*, CommandRunner>> commands;
-  auto add = [&](CommandRunner (*adder)(CLI::App&)) {
-    CommandRunner runner = adder(app);
+  auto add = [&](CommandRunner runner) {
     commands.emplace_back(app.get_subcommands({}).back(), std::move(runner));
   };
-  add(add_run_command);
-  add(add_example_command);
-  add(add_convert_command);
-  add(add_validate_command);
-  add(add_table_command);
-  add(add_plot_command);
+  add(add_run_command(app, *distribution));
+  add(add_example_command(app));
+  add(add_convert_command(app));
+  add(add_validate_command(app));
+  add(add_table_command(app, *distribution));
+  add(add_plot_command(app));
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version
-    return app.exit(e);
+    return root ? app.exit(e) : exit_ok;
   } catch (const CLI::ParseError& e) {
     // CLI11's own codes (105 for a missing file …) would contradict the documented statuses.
-    app.exit(e);
+    if (root) app.exit(e);
     return exit_input_error;
   }
 
@@ -49,12 +52,13 @@ int main(int argc, char** argv) {
     for (auto& [cmd, runner] : commands)
       if (cmd->parsed()) return runner();
   } catch (const rollcontact::InputError& e) {
-    fmt::print(stderr, "rollcontact: error: {}\n", e.what());
+    if (root) fmt::print(stderr, "rollcontact: error: {}\n", e.what());
     return exit_input_error;
   } catch (const rollcontact::Error& e) {
-    fmt::print(stderr, "rollcontact: error: {}\n", e.what());
+    if (root) fmt::print(stderr, "rollcontact: error: {}\n", e.what());
     return exit_case_failed;
   } catch (const std::exception& e) {
+    // Every process reports: an internal error on one rank is not seen by the others.
     fmt::print(stderr, "rollcontact: internal error: {}\n", e.what());
     return exit_internal;
   }

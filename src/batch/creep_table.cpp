@@ -9,6 +9,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <istream>
 #include <numbers>
@@ -194,6 +195,43 @@ std::vector<TableRow> run_table(std::span<const TableCase> cases, const TableSet
         rows[i] = solve_table_case(cases[i], s, solvers[worker]);
       },
       progress);
+  return rows;
+}
+
+std::string encode_table_row(const TableRow& row) {
+  const double values[4] = {row.fx_rel, row.fy_rel, row.mz_rel, row.slip_percent};
+  std::string bytes(sizeof values + 1, '\0');
+  std::memcpy(bytes.data(), values, sizeof values);
+  bytes[sizeof values] = row.converged ? '1' : '0';
+  return bytes + row.message;
+}
+
+TableRow decode_table_row(const std::string& bytes, const TableCase& tc) {
+  double values[4];
+  if (bytes.size() < sizeof values + 1)
+    throw Error(fmt::format("table case {}: truncated result from another process", tc.number));
+  std::memcpy(values, bytes.data(), sizeof values);
+  TableRow row;
+  row.tc = tc;
+  row.fx_rel = values[0];
+  row.fy_rel = values[1];
+  row.mz_rel = values[2];
+  row.slip_percent = values[3];
+  row.converged = bytes[sizeof values] == '1';
+  row.message = bytes.substr(sizeof values + 1);
+  return row;
+}
+
+std::vector<TableRow> run_table_distributed(std::span<const TableCase> cases,
+                                            const TableSettings& s, Distribution& distribution) {
+  PatchSolver solver;
+  const std::vector<std::string> blobs = distribution.map_gather(
+      cases.size(), default_chunk(cases.size(), distribution.size()),
+      [&](std::size_t i) { return encode_table_row(solve_table_case(cases[i], s, solver)); });
+  std::vector<TableRow> rows;
+  rows.reserve(blobs.size());
+  for (std::size_t i = 0; i < blobs.size(); ++i)
+    rows.push_back(decode_table_row(blobs[i], cases[i]));
   return rows;
 }
 

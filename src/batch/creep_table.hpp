@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/distribution.hpp"
 #include "rollcontact/solve.hpp"
 
 namespace rollcontact::batch {
@@ -97,6 +98,17 @@ TableRow solve_table_case(const TableCase& tc, const TableSettings& s, PatchSolv
 /// `cases`. `progress(done)` is called from the calling thread every ~0.2 s and at the end.
 std::vector<TableRow> run_table(std::span<const TableCase> cases, const TableSettings& s,
                                 int threads, const std::function<void(std::size_t)>& progress = {});
+
+/// Solves `cases` over the processes of `distribution` (one PatchSolver each, cases handed out
+/// dynamically in chunks) and returns the rows in the order of `cases` on the root (empty on the
+/// other processes): the same rows, bit for bit, as run_table() on one process.
+std::vector<TableRow> run_table_distributed(std::span<const TableCase> cases,
+                                            const TableSettings& s, Distribution& distribution);
+
+/// A row's results as bytes for another process (doubles bit-exact, the message verbatim) and
+/// back; the case parameters travel as the case itself.
+std::string encode_table_row(const TableRow& row);
+TableRow decode_table_row(const std::string& bytes, const TableCase& tc);
 
 /// Selection "1-50,60,100-120" of 1-based case numbers, sorted and unique, each in 1..total.
 /// Empty text selects all. Throws InputError for malformed text or out-of-range numbers.

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <atomic>
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <sstream>
 #include <variant>
@@ -129,11 +131,10 @@ CaseOutcome solve_one(const format::InputCase& problem, RunState& state) {
   return outcome;
 }
 
-/// The cases solved on `threads` workers: each sequence (module and result element) in its
-/// order on one worker, the sequences in parallel. The solvers are made before the workers
-/// start, so that each worker only touches its own.
-std::vector<CaseOutcome> solve_in_parallel(const std::vector<format::InputCase>& problems,
-                                           RunState& state, const RunOptions& options) {
+/// The sequences of a run: the case indices of each module and result element, in order.
+/// Sequences are independent of each other; the cases of one depend on their predecessors.
+std::vector<std::vector<std::size_t>> sequence_groups(
+    const std::vector<format::InputCase>& problems) {
   std::map<std::pair<int, int>, std::vector<std::size_t>> sequences;
   for (std::size_t k = 0; k < problems.size(); ++k) {
     const auto* m3 = std::get_if<format::CaseRecord>(&problems[k]);
@@ -141,13 +142,25 @@ std::vector<CaseOutcome> solve_in_parallel(const std::vector<format::InputCase>&
     const int element =
         m3 ? m3->result_element : std::get<format::WheelRailRecord>(problems[k]).result_element;
     sequences[{module, element}].push_back(k);
-    if (m3)
-      state.patch_solvers.try_emplace(element, options.solve);
-    else
-      state.wheelset_solvers.try_emplace(element, options.solve);
   }
   std::vector<std::vector<std::size_t>> groups;
   for (auto& [key, indices] : sequences) groups.push_back(std::move(indices));
+  return groups;
+}
+
+/// The cases solved on `threads` workers: each sequence (module and result element) in its
+/// order on one worker, the sequences in parallel. The solvers are made before the workers
+/// start, so that each worker only touches its own.
+std::vector<CaseOutcome> solve_in_parallel(const std::vector<format::InputCase>& problems,
+                                           RunState& state, const RunOptions& options) {
+  for (const format::InputCase& c : problems) {
+    if (const auto* m3 = std::get_if<format::CaseRecord>(&c))
+      state.patch_solvers.try_emplace(m3->result_element, options.solve);
+    else
+      state.wheelset_solvers.try_emplace(std::get<format::WheelRailRecord>(c).result_element,
+                                         options.solve);
+  }
+  const std::vector<std::vector<std::size_t>> groups = sequence_groups(problems);
   std::vector<CaseOutcome> outcomes(problems.size());
   std::atomic<std::size_t> done{0};
   ParallelOptions parallel;
@@ -170,45 +183,55 @@ std::vector<CaseOutcome> solve_in_parallel(const std::vector<format::InputCase>&
 
 }  // namespace
 
-RunResult run_problems(const std::vector<format::InputCase>& problems,
-                       const std::string& input_name, const std::filesystem::path& output_stem,
-                       const RunOptions& options) {
-  RunResult result;
+namespace {
+
+/// What one case contributes to the run's report and JSON (its side files are written here).
+struct CaseOutput {
+  std::string report;
+  nlohmann::json json;
+  int failed = 0;  ///< 1: an error or not converged
+};
+
+CaseOutput render_case(const format::InputCase& input, const CaseOutcome& outcome,
+                       const std::filesystem::path& output_stem) {
+  const auto* m3 = std::get_if<format::CaseRecord>(&input);
+  const auto* m1 = std::get_if<format::WheelRailRecord>(&input);
+  CaseOutput out;
+  std::ostringstream report;
+  if (outcome.solved &&
+      !(outcome.wheel_rail ? outcome.wheelrail.converged : outcome.solution.solver.converged))
+    out.failed = 1;
+  if (!outcome.error.empty()) out.failed = 1;
+  if (outcome.solved && outcome.wheel_rail) {
+    format::write_wheelrail_case_report(report, *m1, outcome.problem, outcome.wheelrail);
+    if (m1->digits.a >= 1)
+      format::write_wheelrail_mat_files(output_stem, *m1, outcome.problem, outcome.wheelrail);
+    out.json = format::wheelrail_case_to_json(outcome.problem, outcome.wheelrail);
+  } else if (outcome.solved) {
+    format::write_case_report(report, *m3, outcome.solution);
+    format::write_subs_file(output_stem, *m3, outcome.solution);
+    if (m3->digits.a >= 1) format::write_mat_file(output_stem, *m3, outcome.solution);
+    out.json = format::case_to_json(*m3, outcome.solution);
+  } else if (!outcome.skipped) {
+    format::write_case_error(report, outcome.problem, outcome.error);
+    out.json = format::case_error_to_json(outcome.problem, outcome.error);
+  }
+  out.report = report.str();
+  return out;
+}
+
+/// Writes the report and JSON of all cases, in case order.
+void write_run_files(std::vector<CaseOutput>& outputs, const std::string& input_name,
+                     const std::filesystem::path& output_stem, RunResult& result) {
   std::ostringstream report;
   format::write_report_banner(report);
   nlohmann::json cases = nlohmann::json::array();
-  RunState state{options, {}, {}};
-  std::vector<CaseOutcome> solved;
-  if (options.threads > 1) solved = solve_in_parallel(problems, state, options);
-
-  for (std::size_t k = 0; k < problems.size(); ++k) {
-    const auto* m3 = std::get_if<format::CaseRecord>(&problems[k]);
-    const auto* m1 = std::get_if<format::WheelRailRecord>(&problems[k]);
-    const format::CaseRecord identity = m3 ? *m3 : format::identity_record(*m1);
-    CaseOutcome outcome = solved.empty() ? solve_one(problems[k], state) : std::move(solved[k]);
-    if (outcome.solved &&
-        !(outcome.wheel_rail ? outcome.wheelrail.converged : outcome.solution.solver.converged))
-      ++result.failed;
-    if (!outcome.error.empty()) ++result.failed;
-    if (outcome.solved && outcome.wheel_rail) {
-      format::write_wheelrail_case_report(report, *m1, identity, outcome.wheelrail);
-      if (m1->digits.a >= 1)
-        format::write_wheelrail_mat_files(output_stem, *m1, identity, outcome.wheelrail);
-      cases.push_back(format::wheelrail_case_to_json(identity, outcome.wheelrail));
-    } else if (outcome.solved) {
-      format::write_case_report(report, *m3, outcome.solution);
-      format::write_subs_file(output_stem, *m3, outcome.solution);
-      if (m3->digits.a >= 1) format::write_mat_file(output_stem, *m3, outcome.solution);
-      cases.push_back(format::case_to_json(*m3, outcome.solution));
-    } else if (!outcome.skipped) {
-      format::write_case_error(report, identity, outcome.error);
-      cases.push_back(format::case_error_to_json(identity, outcome.error));
-    }
-    if (options.on_case) options.on_case(outcome, k, problems.size());
-    result.cases.push_back(std::move(outcome));
+  for (CaseOutput& o : outputs) {
+    report << o.report;
+    if (!o.json.is_null()) cases.push_back(std::move(o.json));
+    result.failed += o.failed;
   }
   format::write_report_end(report);
-
   result.report_path = output_stem;
   result.report_path += ".out";
   result.json_path = output_stem;
@@ -216,6 +239,82 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
   format::write_file_atomically(result.report_path, report.str());
   format::write_file_atomically(
       result.json_path, format::results_document(input_name, std::move(cases)).dump(2) + "\n");
+}
+
+/// Length-prefixed fields of the case outputs one process sends the root.
+void append_field(std::string& out, const std::string& field) {
+  const std::uint64_t n = field.size();
+  out.append(reinterpret_cast<const char*>(&n), sizeof n);
+  out.append(field);
+}
+
+std::string take_field(const std::string& in, std::size_t& pos) {
+  std::uint64_t n = 0;
+  if (pos + sizeof n > in.size()) throw Error("truncated case output from another process");
+  std::memcpy(&n, in.data() + pos, sizeof n);
+  pos += sizeof n;
+  if (pos + n > in.size()) throw Error("truncated case output from another process");
+  std::string field = in.substr(pos, n);
+  pos += n;
+  return field;
+}
+
+/// The run spread over the processes of options.distribution: a sequence at a time to
+/// whichever process is free; the root assembles the outputs in case order.
+RunResult run_distributed(const std::vector<format::InputCase>& problems,
+                          const std::string& input_name, const std::filesystem::path& output_stem,
+                          const RunOptions& options) {
+  Distribution& d = *options.distribution;
+  const std::vector<std::vector<std::size_t>> groups = sequence_groups(problems);
+  RunState state{options, {}, {}};
+  const std::vector<std::string> blobs = d.map_gather(groups.size(), 1, [&](std::size_t g) {
+    std::string out;
+    for (const std::size_t k : groups[g]) {
+      const CaseOutput o = render_case(problems[k], solve_one(problems[k], state), output_stem);
+      append_field(out, std::to_string(k));
+      append_field(out, std::to_string(o.failed));
+      append_field(out, o.report);
+      append_field(out, o.json.is_null() ? std::string() : o.json.dump());
+    }
+    return out;
+  });
+  RunResult result;
+  if (!d.is_root()) return result;
+  std::vector<CaseOutput> outputs(problems.size());
+  for (const std::string& blob : blobs) {
+    for (std::size_t pos = 0; pos < blob.size();) {
+      const std::size_t k = std::stoul(take_field(blob, pos));
+      CaseOutput& o = outputs.at(k);
+      o.failed = std::stoi(take_field(blob, pos));
+      o.report = take_field(blob, pos);
+      const std::string json = take_field(blob, pos);
+      if (!json.empty()) o.json = nlohmann::json::parse(json);
+    }
+  }
+  write_run_files(outputs, input_name, output_stem, result);
+  return result;
+}
+
+}  // namespace
+
+RunResult run_problems(const std::vector<format::InputCase>& problems,
+                       const std::string& input_name, const std::filesystem::path& output_stem,
+                       const RunOptions& options) {
+  if (options.distribution != nullptr && options.distribution->size() > 1)
+    return run_distributed(problems, input_name, output_stem, options);
+  RunResult result;
+  RunState state{options, {}, {}};
+  std::vector<CaseOutcome> solved;
+  if (options.threads > 1) solved = solve_in_parallel(problems, state, options);
+  std::vector<CaseOutput> outputs;
+  outputs.reserve(problems.size());
+  for (std::size_t k = 0; k < problems.size(); ++k) {
+    CaseOutcome outcome = solved.empty() ? solve_one(problems[k], state) : std::move(solved[k]);
+    outputs.push_back(render_case(problems[k], outcome, output_stem));
+    if (options.on_case) options.on_case(outcome, k, problems.size());
+    result.cases.push_back(std::move(outcome));
+  }
+  write_run_files(outputs, input_name, output_stem, result);
   return result;
 }
 
@@ -303,7 +402,18 @@ RunResult run_input_file(const std::filesystem::path& input, const RunOptions& o
   refuse_overwriting_input(input, stem);
   std::vector<format::InputCase> problems = read_problems(input);
   validate_cases(problems);
-  prepare_output_dir(dir);
+  // One process checks (and creates) the folder; the others wait for it before they write.
+  const bool root = options.distribution == nullptr || options.distribution->is_root();
+  int prepared = 0;
+  try {
+    if (root) prepare_output_dir(dir);
+  } catch (const InputError&) {
+    prepared = 1;
+    if (options.distribution != nullptr) options.distribution->max_over_processes(prepared);
+    throw;
+  }
+  if (options.distribution != nullptr && options.distribution->max_over_processes(prepared) != 0)
+    throw InputError(dir.string(), 0, "the output folder could not be prepared (see the root)");
   RunResult result = run_problems(problems, input.filename().string(), stem, options);
   result.inputs = std::move(problems);
   return result;

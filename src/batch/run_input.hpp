@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/distribution.hpp"
 #include "format/inp/case_record.hpp"
 #include "format/inp/inp_reader.hpp"
 #include "rollcontact/solution.hpp"
@@ -38,6 +39,11 @@ struct RunOptions {
   int threads = 1;
   /// Called about every 0.2 s with the cases solved so far while threads > 1 work; may be empty.
   std::function<void(std::size_t done, std::size_t count)> on_progress;
+  /// Several processes (MPI): the sequences are spread over them dynamically, every process
+  /// writes the side files (.mat, .subs) of the cases it solves, and the root writes the report
+  /// and JSON — the bytes of a one-process run. RunResult::cases stay empty and on_case is not
+  /// called then; the other processes' RunResult is empty. Null or one process: this one.
+  Distribution* distribution = nullptr;
 };
 
 struct RunResult {
