@@ -12,6 +12,8 @@ if(ROLLCONTACT_WITH_FFTW)
   # Single precision, for the preconditioners (same Debian package, libfftw3-dev).
   pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 endif()
+# HDF5 (libhdf5-dev, the C API) for creep-force lookup tables.
+pkg_check_modules(HDF5 REQUIRED IMPORTED_TARGET hdf5)
 if(ROLLCONTACT_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

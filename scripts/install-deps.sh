@@ -6,7 +6,7 @@ packages=(build-essential cmake pkg-config git clang-format clang libclang-rt-14
           libfftw3-dev libeigen3-dev libcli11-dev nlohmann-json3-dev libfmt-dev
           libtomlplusplus-dev libgtest-dev libgmock-dev libbenchmark-dev
           python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest
-          libopenmpi-dev openmpi-bin)
+          libopenmpi-dev openmpi-bin libhdf5-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -35,4 +35,8 @@ CommandRunner add_plot_command(CLI::App& app);
 /// over the processes of `distribution` (several under mpirun).
 CommandRunner add_table_command(CLI::App& app, batch::Distribution& distribution);
 
+/// `rollcontact lookup -o FILE.h5`: a creep-force lookup table for MBS codes (HDF5); `--table
+/// FILE --at ...` evaluates one.
+CommandRunner add_lookup_command(CLI::App& app, batch::Distribution& distribution);
+
 }  // namespace rollcontact::cli

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   add(add_validate_command(app));
   add(add_table_command(app, *distribution));
   add(add_plot_command(app));
+  add(add_lookup_command(app, *distribution));
 
   try {
     app.parse(argc, argv);

@@ -17,13 +17,13 @@ ux, uy, un [mm], sx, sy (relative slip [-]), h [mm] and state (0 exterior, 1 adh
 3 plastic) as NumPy arrays of shape (my, mx): row iy, column ix.
 """
 
-from ._rollcontact import Error, InputError, __version__
+from ._rollcontact import CreepLookupTable, Error, InputError, __version__
 from ._rollcontact import Solver as _CoreSolver
 from ._rollcontact import run_file as _run_file
 from .cases import hertz_case, set_value, to_toml
 
 __all__ = ["run", "solve", "sweep", "Solver", "hertz_case", "to_toml", "set_value",
-           "Error", "InputError", "__version__"]
+           "CreepLookupTable", "Error", "InputError", "__version__"]
 
 
 def run(path, output_dir=None):

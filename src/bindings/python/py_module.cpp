@@ -5,6 +5,7 @@
 // InputError → ValueError (bad input, with file and line), other rollcontact errors →
 // RuntimeError.
 
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -17,6 +18,7 @@
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/to_wheelrail.hpp"
 #include "format/toml/toml_case_reader.hpp"
+#include "rollcontact/creep_lookup.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/solve.hpp"
 #include "rollcontact/version.hpp"
@@ -125,6 +127,38 @@ class Solver {
 
 }  // namespace
 
+/// CreepLookupTable::evaluate over NumPy arrays (broadcast): a (…, 3) array fx, fy, mz.
+/// Arguments are taken as objects so that scalars stay 0-dimensional (a scalar query gives
+/// shape (3,)).
+py::array_t<double> evaluate_lookup(const CreepLookupTable& t, const py::object& a_over_b,
+                                    const py::object& ksi, const py::object& eta,
+                                    const py::object& phi) {
+  auto args = py::make_tuple(a_over_b, ksi, eta, phi);
+  py::object broadcast = py::module_::import("numpy").attr("broadcast_arrays")(*args);
+  auto arrays = broadcast.cast<py::list>();
+  std::vector<py::array_t<double, py::array::c_style | py::array::forcecast>> in;
+  for (auto a : arrays)
+    in.emplace_back(py::module_::import("numpy").attr("ascontiguousarray")(a, "float64"));
+  // The broadcast shape (0-d for scalars; ascontiguousarray makes those 1-d).
+  std::vector<py::ssize_t> shape;
+  for (auto d : arrays[0].attr("shape").cast<py::tuple>()) shape.push_back(d.cast<py::ssize_t>());
+  const py::ssize_t n = in[0].size();
+  shape.push_back(3);
+  py::array_t<double> out(shape);
+  double* o = out.mutable_data();
+  const double *ab = in[0].data(), *x = in[1].data(), *y = in[2].data(), *z = in[3].data();
+  {
+    py::gil_scoped_release release;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const CreepLookupValue v = t.evaluate(ab[i], x[i], y[i], z[i]);
+      o[3 * i] = v.fx;
+      o[3 * i + 1] = v.fy;
+      o[3 * i + 2] = v.mz;
+    }
+  }
+  return out;
+}
+
 PYBIND11_MODULE(_rollcontact, m) {
   m.doc() = "rollcontact: rolling and sliding contact (CONTACT-compatible), compiled core";
   m.attr("__version__") = rollcontact::version_string;
@@ -141,4 +175,33 @@ PYBIND11_MODULE(_rollcontact, m) {
       .def("solve_toml", &Solver::solve_toml, py::arg("toml"), py::arg("name") = "python",
            py::arg("base_dir") = std::filesystem::path{},
            "Solve every [[case]] of the TOML text (module 3 or wheel/rail); one dict per case.");
+  py::class_<CreepLookupTable>(m, "CreepLookupTable",
+                               "A creep-force lookup table (HDF5, `rollcontact lookup -o`): "
+                               "normalised creep forces over a/b and normalised creepages.")
+      .def(py::init(&load_creep_lookup), py::arg("path"), "Load a table written by rollcontact.")
+      .def("evaluate", &evaluate_lookup, py::arg("a_over_b"), py::arg("ksi_n"), py::arg("eta_n"),
+           py::arg("phi_n"),
+           "Normalised results (Fx/(mu FN), Fy/(mu FN), Mz/(mu FN c)) as an array (..., 3); "
+           "arguments broadcast like NumPy arrays.")
+      .def(
+          "forces",
+          [](const CreepLookupTable& t, double a, double b, double fn, double g, double mu,
+             double ksi, double eta, double phi) {
+            const CreepLookupForces f = t.forces(a, b, fn, g, mu, ksi, eta, phi);
+            return py::make_tuple(f.fx_N, f.fy_N, f.mz_Nmm);
+          },
+          py::arg("a_mm"), py::arg("b_mm"), py::arg("fn_N"), py::arg("g_N_mm2"), py::arg("mu"),
+          py::arg("ksi"), py::arg("eta"), py::arg("phi_rad_mm"),
+          "(Fx [N], Fy [N], Mz [N mm]) in physical units.")
+      .def_property_readonly("method", [](const CreepLookupTable& t) { return t.info().method; })
+      .def_property_readonly("mx", [](const CreepLookupTable& t) { return t.info().mx; })
+      .def_property_readonly("axes", [](const CreepLookupTable& t) {
+        const CreepLookupAxes& a = t.axes();
+        py::dict d;
+        d["a_over_b"] = a.a_over_b;
+        d["ksi_n"] = a.ksi;
+        d["eta_n"] = a.eta;
+        d["phi_n"] = a.phi;
+        return d;
+      });
 }
