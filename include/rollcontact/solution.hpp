@@ -1,6 +1,7 @@
 #pragma once
 // Solution: fields on the grid, totals and solver statistics of one solved case.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,6 +13,20 @@ namespace rollcontact {
 /// Element division codes (spec/physics.md §6).
 enum class ElementState : std::uint8_t { Exterior = 0, Adhesion = 1, Slip = 2, Plastic = 3 };
 
+/// The delayed (viscous) part of one viscoelastic body's compliance (M=1, spec-additions §B5),
+/// in the units of the combined coefficients: it adds
+/// weight·∫₀^∞ e^{−σ} C_ij(ν, k; x + ℓσ) dσ / G to C_ij/G, with C_ij the half-space coefficients of
+/// a body with Poisson ratio ν and coupling parameter k, seen from the observation point moved
+/// upstream by ℓσ (the material there was loaded σ relaxation times ago).
+struct ViscousCompliance {
+  double weight = 0.0;  ///< ½·G·FG_a/G_a [-] (both bodies merged: their sum); 0: none
+  double nu = 0.0;      ///< ν_a [-]
+  double k = 0.0;       ///< ±½(1−2ν_a) [-] (+ body 1, − body 2; merged: 0)
+  double relaxation_length_mm = 0.0;  ///< ℓ_a = τ_c·V [mm]; 0: the rubbery response at once
+
+  friend bool operator==(const ViscousCompliance&, const ViscousCompliance&) = default;
+};
+
 /// Combined elastic constants of the two bodies (spec/physics.md §3.1).
 struct CombinedMaterial {
   double g = 0.0;   ///< combined shear modulus G [N/mm²]
@@ -20,6 +35,13 @@ struct CombinedMaterial {
   /// Tangential compliance of an interfacial layer h/G₃ [mm³/N] (M=4), added to the diagonal
   /// of the tangential influence coefficients; 0 without a layer.
   double layer_compliance = 0.0;
+  /// Viscoelastic bodies (M=1): the delayed parts added to every coefficient (g, nu, k above are
+  /// then the glassy constants); empty (weight 0) for elastic bodies.
+  std::array<ViscousCompliance, 2> viscous{};
+
+  bool viscoelastic() const noexcept {
+    return viscous[0].weight != 0.0 || viscous[1].weight != 0.0;
+  }
 };
 
 /// Hertz solution used for Hertzian potential-contact options (IPOTCN < 0).
@@ -127,6 +149,9 @@ struct SubsurfaceResult {
 struct Solution {
   Grid grid;
   CombinedMaterial material;
+  /// Viscoelastic bodies (M=1): the effective constants NUV, GV, AKV (P§3.1 with the rubbery
+  /// compliance of a body with TC = 0, spec-additions §B5); g = 0 otherwise.
+  CombinedMaterial viscoelastic_effective;
   HertzReport hertz;
   std::vector<double> h;           ///< undeformed distance without approach [mm] (1e30: excluded)
   std::vector<double> pn;          ///< normal pressure [N/mm²]

@@ -15,8 +15,10 @@ NormalOperators& OperatorCache::normal(const Grid& grid, const CombinedMaterial&
   const OperatorKey key{grid, material, model::TangentialKind::None, 0.0, 0.0, interaction};
   return normal_.get(key, case_number_, [&](NormalOperators& e) {
     ops::assemble_normal(e, grid, material, fft_, interaction, &kernels_);
-    e.preconditioner = std::make_unique<normal::CirculantPreconditioner>(
-        grid, material, fft_.backend, fft_.planning, &e.kernel);
+    // Viscoelastic (M=1): solved without it (normal/active_set_solver.hpp, spec-additions §B5).
+    if (!material.viscoelastic())
+      e.preconditioner = std::make_unique<normal::CirculantPreconditioner>(
+          grid, material, fft_.backend, fft_.planning, &e.kernel);
   });
 }
 

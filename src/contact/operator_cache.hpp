@@ -20,7 +20,8 @@
 
 namespace rollcontact {
 
-/// C_nn/G with its FFT product and the circulant preconditioner of the normal CG.
+/// C_nn/G with its FFT product and the circulant preconditioner of the normal CG (none for
+/// viscoelastic bodies, whose normal problem is not solved by CG).
 struct NormalOperators : elastic::operators::NormalOperatorSet {
   std::unique_ptr<normal::CirculantPreconditioner> preconditioner;
 };
@@ -57,9 +58,9 @@ struct OperatorKey {
     return a.grid.mx == b.grid.mx && a.grid.my == b.grid.my && a.grid.dx == b.grid.dx &&
            a.grid.dy == b.grid.dy && a.material.g == b.material.g &&
            a.material.nu == b.material.nu && a.material.k == b.material.k &&
-           a.material.layer_compliance == b.material.layer_compliance && a.kind == b.kind &&
-           a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
-           elastic::same_interaction(a.interaction, b.interaction);
+           a.material.layer_compliance == b.material.layer_compliance &&
+           a.material.viscous == b.material.viscous && a.kind == b.kind && a.shift_x == b.shift_x &&
+           a.shift_y == b.shift_y && elastic::same_interaction(a.interaction, b.interaction);
   }
 };
 

@@ -17,6 +17,7 @@
 #include "elastic/material.hpp"
 #include "geometry/discretisation.hpp"
 #include "geometry/hertz.hpp"
+#include "normal/active_set_solver.hpp"
 #include "normal/normal_solver.hpp"
 #include "physics/friction_law.hpp"
 #include "post/subsurface.hpp"
@@ -342,7 +343,9 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   settings.max_iterations = problem_.solver.max_inner_iterations;
   const normal::NormalLoad load =
       force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach;
-  if (initial == nullptr) {
+  // Viscoelastic rolling (M=1): A is not symmetric, NormCG does not apply (active_set_solver.hpp).
+  const bool nonsymmetric = sol_.material.viscoelastic();
+  if (initial == nullptr && !nonsymmetric) {
     int coarse_iterations = 0;
     start = coarse_grid_start(st_, 1, grid_, h_star, load, load_value, sol_.material, settings,
                               coarse_iterations);
@@ -350,11 +353,17 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     if (!start.empty()) initial = &start;
   }
 
-  normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner,
-                              ops.interaction.get());
-  normal::NormalResult r =
-      solver.solve(h_star, force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach,
-                   load_value, settings, initial, sol_.material.nu, sol_.material.g);
+  normal::NormalResult r;
+  if (nonsymmetric) {
+    normal::ActiveSetNormalSolver solver(grid_, *ops.product);
+    r = solver.solve(h_star, load, load_value, settings, initial, sol_.material.nu,
+                     sol_.material.g);
+  } else {
+    normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner,
+                                ops.interaction.get());
+    r = solver.solve(h_star, load, load_value, settings, initial, sol_.material.nu,
+                     sol_.material.g);
+  }
   sol_.pn = std::move(r.pn);
   sol_.totals.pen = r.pen;
   sol_.solver.normal_iterations += r.iterations;
@@ -932,10 +941,8 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
   const model::Bodies& b = problem.bodies;
 
   Solution sol;
-  sol.material =
-      elastic::combine_materials(b.body1.poisson_ratio, b.body2.poisson_ratio,
-                                 b.body1.shear_modulus_N_mm2, b.body2.shear_modulus_N_mm2);
-  if (b.has_layer) sol.material.layer_compliance = b.layer.compliance_mm3_N();
+  sol.material = elastic::combine_bodies(b, problem.rolling.velocity_mm_per_s);
+  if (b.viscoelastic) sol.viscoelastic_effective = elastic::effective_viscoelastic_constants(b);
   geometry::Discretisation disc = geometry::build_discretisation(problem, sol.material);
   sol.grid = disc.grid;
   sol.hertz = disc.hertz;

@@ -14,8 +14,10 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
+#include "elastic/viscous_kernel.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::elastic {
@@ -143,21 +145,17 @@ void add_layer_compliance(Component c, const Grid& grid, const CombinedMaterial&
     kernel.at(dix, diy) += material.layer_compliance;
 }
 
-}  // namespace
-
-Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material, double shift_x,
-                   double shift_y) {
-  if (!(material.g > 0.0)) throw ProblemError("influence kernel: combined G must be positive");
-  if (!(grid.dx > 0.0 && grid.dy > 0.0)) {
-    throw ProblemError("influence kernel: element sizes must be positive");
-  }
+/// The corner sums of component c on the grid, divided by G; `log_floor` [mm]: log terms whose
+/// argument lies below it count as 0.
+Kernel corner_sum_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                         double shift_x, double shift_y, Real log_floor) {
   const int mx = grid.mx, my = grid.my;
   Kernel kernel(mx, my);
   if (is_coupling(c) && !is_coupled(material)) return kernel;
 
   const BaseComponent b = base_of(c);
   const Real dx = grid.dx, dy = grid.dy;
-  const CornerContext ctx{b.base, material.nu, dx * 1e-10L, dx * 1e-20L};
+  const CornerContext ctx{b.base, material.nu, log_floor, dx * 1e-20L};
   const Real factor = b.sign * prefactor(b.base, material.nu, material.k) / Real(material.g);
 
   // Neighbouring offsets share corners: tabulate F once per corner instead of four times.
@@ -188,7 +186,30 @@ Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& materi
     }
     prev.swap(cur);
   }
+  return kernel;
+}
+
+void check_grid(const CombinedMaterial& material, const Grid& grid) {
+  if (!(material.g > 0.0)) throw ProblemError("influence kernel: combined G must be positive");
+  if (!(grid.dx > 0.0 && grid.dy > 0.0)) {
+    throw ProblemError("influence kernel: element sizes must be positive");
+  }
+}
+
+}  // namespace
+
+Kernel make_continuous_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                              double shift_x, double shift_y) {
+  check_grid(material, grid);
+  return corner_sum_kernel(c, grid, material, shift_x, shift_y, std::numeric_limits<Real>::min());
+}
+
+Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material, double shift_x,
+                   double shift_y) {
+  check_grid(material, grid);
+  Kernel kernel = corner_sum_kernel(c, grid, material, shift_x, shift_y, Real(grid.dx) * 1e-10L);
   add_layer_compliance(c, grid, material, shift_x, shift_y, kernel);
+  if (material.viscoelastic()) add_viscous_parts(c, grid, material, shift_x, shift_y, kernel);
   // Element sizes far outside what the closed forms can represent (e.g. DX = 1e30 mm) overflow
   // to inf or NaN: reject the grid here rather than report a NaN force later.
   for (double v : kernel.data())

@@ -29,6 +29,10 @@ class Kernel {
   double& at(int dix, int diy) noexcept { return data_[index(dix, diy)]; }
   double at(int dix, int diy) const noexcept { return data_[index(dix, diy)]; }
   const std::vector<double>& data() const noexcept { return data_; }
+  /// this += w·other, offset by offset (same mx, my).
+  void add_scaled(const Kernel& other, double w) noexcept {
+    for (std::size_t i = 0; i < data_.size(); ++i) data_[i] += w * other.data_[i];
+  }
 
  private:
   std::size_t index(int dix, int diy) const noexcept {
@@ -43,13 +47,26 @@ class Kernel {
 /// solved apart (spec §3.2; K = 0 within rounding for equal materials).
 inline constexpr double kCouplingThreshold = 1e-6;
 
-/// True when the material couples the normal and tangential problems (|K| ≥ threshold).
+/// True when the material couples the normal and tangential problems (|K| ≥ threshold, or a
+/// viscous part with a coupling of that size: dissimilar viscoelastic bodies).
 inline bool is_coupled(const CombinedMaterial& material) noexcept {
-  return material.k >= kCouplingThreshold || material.k <= -kCouplingThreshold;
+  const auto large = [](double k) { return k >= kCouplingThreshold || k <= -kCouplingThreshold; };
+  return large(material.k) || large(material.viscous[0].weight * material.viscous[0].k) ||
+         large(material.viscous[1].weight * material.viscous[1].k);
 }
 
-/// Tabulates component c of the influence matrix for the grid and material (divided by G).
+/// Tabulates component c of the influence matrix for the grid and material (divided by G),
+/// including an interfacial layer's compliance and the viscous parts of viscoelastic bodies
+/// (elastic/viscous_kernel.hpp).
 Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                    double shift_x = 0.0, double shift_y = 0.0);
+
+/// The elastic corner sums of make_kernel (no layer, no viscous part) without CONTACT's guard
+/// that drops a log term below δx·1e−10 (physics.md §3.2): that guard, harmless at the fixed
+/// offsets of make_kernel, makes the coefficients jump by ~1e-3 where a corner passes within
+/// ~1e-4 mm of an axis (2-D strips), which an integral over the shift must not see. Continuous
+/// in the shift; x·log x = 0 at x = 0 only.
+Kernel make_continuous_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                              double shift_x = 0.0, double shift_y = 0.0);
 
 }  // namespace rollcontact::elastic

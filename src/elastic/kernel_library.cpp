@@ -26,10 +26,17 @@ Kernel cut_kernel(const Kernel& big, int mx, int my) {
 
 Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMaterial& m,
                              double shift_x, double shift_y) {
+  // The quadrature of a viscous part follows the grid's length (its kinks), so a kernel cut from
+  // a larger grid's would differ in the last digits: viscoelastic kernels are made directly.
+  if (m.viscoelastic()) {
+    ++computed_;
+    return make_kernel(c, grid, m, shift_x, shift_y);
+  }
   for (auto it = entries_.begin(); it != entries_.end(); ++it) {
     const Entry& e = *it;
     if (e.c != c || e.dx != grid.dx || e.dy != grid.dy || e.g != m.g || e.nu != m.nu ||
-        e.k != m.k || e.layer != m.layer_compliance || e.shift_x != shift_x || e.shift_y != shift_y)
+        e.k != m.k || e.layer != m.layer_compliance || e.shift_x != shift_x ||
+        e.shift_y != shift_y || e.viscous != m.viscous)
       continue;
     if (e.kernel.mx() >= grid.mx && e.kernel.my() >= grid.my) {
       entries_.splice(entries_.begin(), entries_, it);
@@ -48,7 +55,7 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
   if (4 * bytes_for(big.mx, big.my) > budget_bytes_)
     return make_kernel(c, grid, m, shift_x, shift_y);
   entries_.push_front({c, grid.dx, grid.dy, m.g, m.nu, m.k, m.layer_compliance, shift_x, shift_y,
-                       make_kernel(c, big, m, shift_x, shift_y)});
+                       m.viscous, make_kernel(c, big, m, shift_x, shift_y)});
   kept_bytes_ += bytes_of(entries_.front().kernel);
   while (kept_bytes_ > budget_bytes_) {
     kept_bytes_ -= bytes_of(entries_.back().kernel);

@@ -6,6 +6,7 @@
 // case and within the vertical-force iteration; cutting the kernel out of a kept larger one
 // replaces the closed forms (logarithms in long double, most of the set-up time) by a copy.
 
+#include <array>
 #include <cstddef>
 #include <list>
 
@@ -31,6 +32,7 @@ class KernelLibrary {
   struct Entry {
     Component c;
     double dx, dy, g, nu, k, layer, shift_x, shift_y;
+    std::array<ViscousCompliance, 2> viscous;
     Kernel kernel;
   };
   std::size_t budget_bytes_, kept_bytes_ = 0;

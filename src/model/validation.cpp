@@ -109,6 +109,17 @@ void friction_and_solver(const PatchProblem& p) {
     at_least("friction.memory_distance_mm", p.friction.memory_distance_mm, 0.0);
     at_least("friction.memory_floor_speed_mm_s", p.friction.memory_floor_speed_mm_s, 0.0);
   }
+  if (p.bodies.viscoelastic) {
+    at_least("bodies.viscous1.creep_ratio", p.bodies.viscous1.creep_ratio, 0.0);
+    at_least("bodies.viscous2.creep_ratio", p.bodies.viscous2.creep_ratio, 0.0);
+    at_least("bodies.viscous1.relaxation_time_s", p.bodies.viscous1.relaxation_time_s, 0.0);
+    at_least("bodies.viscous2.relaxation_time_s", p.bodies.viscous2.relaxation_time_s, 0.0);
+    // The delayed response is integrated along the rolling path (spec-additions §B5).
+    if (p.tangential.kind != TangentialKind::SteadyRolling)
+      throw InvalidValueError("bodies.viscoelastic",
+                              ": viscoelastic bodies need steady rolling (T=3)");
+    positive("rolling.velocity_mm_per_s", p.rolling.velocity_mm_per_s);
+  }
   const SimplifiedParameters& s = p.bodies.simplified;
   finite("bodies.simplified.flexibility_mm3_N", s.flexibility_mm3_N);
   finite("bodies.simplified.k0", s.k0);

@@ -18,8 +18,9 @@ enum class TangentialSolverKind { None, TangCG, ConvexGS, SteadyGS };
 TangentialSolverKind select_solver(const model::PatchProblem& problem);
 
 /// χ, δq, V and δt after the adjustments of physics.md §14 (T=0,1: χ=0, δq=1, V=1; T=3: δq = δx
-/// with every solver, and χ → 0 or π with SteadyGS and the simplified theories). `warnings`
-/// receives a message when a value is changed by more than CONTACT's 1 % threshold.
+/// with every solver, and χ → 0 or π with SteadyGS and the simplified theories, χ := 0 for
+/// viscoelastic bodies). `warnings` receives a message when a value is changed by more than
+/// CONTACT's 1 % threshold.
 EffectiveKinematics effective_kinematics(const model::PatchProblem& problem, const Grid& grid,
                                          std::vector<std::string>* warnings = nullptr);
 

@@ -55,13 +55,31 @@ struct InterfacialLayer {
   [[nodiscard]] bool plastic() const { return yield_stress_N_mm2 > 0.0; }
 };
 
+/// The delayed response of a body modelled as a standard linear solid (CONTACT M=1,
+/// spec-additions §B5): the body's ElasticBody holds the glassy (instantaneous) modulus G_g; a
+/// stress applied at t = 0 and held gives the creep compliance
+/// J(t) = [1 + FG·(1 − e^{−t/τ_c})]/G_g, rising to the rubbery (relaxed) 1/G_r = (1 + FG)/G_g.
+struct ViscoelasticBody {
+  double creep_ratio = 0.0;        ///< FG = (E_g − E_r)/E_r ≥ 0 [-]; 0: purely elastic
+  double relaxation_time_s = 0.0;  ///< τ_c (TC) ≥ 0 [s]; 0: the body responds rubbery at once
+
+  /// Relaxation length ℓ = τ_c·V [mm]: how far upstream the material remembers its loading
+  /// when rolling at velocity V [mm/s].
+  [[nodiscard]] double relaxation_length_mm(double velocity_mm_s) const {
+    return relaxation_time_s * velocity_mm_s;
+  }
+};
+
 struct Bodies {
-  ElasticBody body1;  ///< the upper body; tractions act on it
+  ElasticBody body1;  ///< the upper body; tractions act on it (glassy modulus if viscoelastic)
   ElasticBody body2;
   TangentialCompliance compliance = TangentialCompliance::ExactHalfSpace;
   SimplifiedParameters simplified;
   bool has_layer = false;  ///< CONTACT M=4: the interfacial layer below applies
   InterfacialLayer layer;
+  /// CONTACT M=1: both bodies are standard linear solids (steady rolling only, χ = 0).
+  bool viscoelastic = false;
+  ViscoelasticBody viscous1, viscous2;
 };
 
 }  // namespace rollcontact::model

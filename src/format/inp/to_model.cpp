@@ -33,6 +33,12 @@ model::Bodies bodies_of(const CaseRecord& r) {
                                      : model::TangentialCompliance::FaStrip;
       b.simplified = {0.0, mp[0], mp[1], mp[2]};
       break;
+    case 1:  // FG1 FG2 TC1 TC2: standard linear solids, GG1, GG2 the glassy moduli
+      b.compliance = model::TangentialCompliance::ExactHalfSpace;
+      b.viscoelastic = true;
+      b.viscous1 = {mp[0], mp[2]};
+      b.viscous2 = {mp[1], mp[3]};
+      break;
     case 4:  // GG3 LAYTHK TAU_C0 K_TAU (TAU_C0 >= 1e10 already stored as 0)
       b.compliance = model::TangentialCompliance::ExactHalfSpace;
       b.has_layer = true;
@@ -121,8 +127,10 @@ model::Friction to_model_friction(int law, const FrictionValues& f, double memds
 void check_supported(const CaseRecord& record) {
   const ControlDigits& d = record.digits;
   if (d.b == 1 || d.b == 4) not_supported(fmt::format("normal method B={}", d.b));
-  if (d.m != 0 && d.m != 2 && d.m != 3 && d.m != 4 && d.m != 5)
+  if (d.m != 0 && d.m != 1 && d.m != 2 && d.m != 3 && d.m != 4 && d.m != 5)
     not_supported(fmt::format("material model M={}", d.m));
+  if (d.m == 1 && d.t != 3)
+    not_supported(fmt::format("viscoelastic bodies M=1 with T={} (steady rolling T=3 only)", d.t));
   if (const auto& mp = record.materials.model_params;
       d.m == 4 && d.t >= 2 && mp[2] > 0.0 && mp[3] != 0.0)
     not_supported(fmt::format("a hardening or softening layer (M=4, K_TAU = {}) in rolling T={}",

@@ -120,18 +120,6 @@ void write_hertz_block(std::ostream& os, const CaseRecord& problem, const Soluti
                fortran_i(grid.my, 6) + g12(grid.dx) + g12(grid.dy));
 }
 
-// Combined constants of the "rubbery" (relaxed) viscoelastic bodies, physics.md §3.1 and §3.3.
-CombinedMaterial rubbery_material(const Materials& m) {
-  const double g1 = m.gg1 / (1.0 + m.model_params[0]);
-  const double g2 = m.gg2 / (1.0 + m.model_params[1]);
-  CombinedMaterial c;
-  if (g1 <= 0.0 || g2 <= 0.0) return c;
-  c.g = 2.0 / (1.0 / g1 + 1.0 / g2);
-  c.nu = c.g * 0.5 * (m.poiss1 / g1 + m.poiss2 / g2);
-  c.k = c.g / 4.0 * ((1.0 - 2.0 * m.poiss1) / g1 - (1.0 - 2.0 * m.poiss2) / g2);
-  return c;
-}
-
 void write_material_block(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;
   const auto& m = problem.materials;
@@ -146,7 +134,8 @@ void write_material_block(std::ostream& os, const CaseRecord& problem, const Sol
   line(os, "  " + g12(m.poiss1) + g12(m.poiss2) + g12(m.gg1) + g12(m.gg2));
   // Not printed for lack of data in CaseRecord: damping (M2=2) and heat constants (H>=1).
   if (d.m == 1) {
-    const CombinedMaterial rv = rubbery_material(m);
+    // The solver's effective constants (zero when the case was not solved).
+    const CombinedMaterial& rv = solution.viscoelastic_effective;
     const double veloc = effective_kinematics(solution).veloc;
     line(os, "");
     line(os, " VISCOELASTIC MATERIAL CONSTANTS");

@@ -230,6 +230,19 @@ TEST(Validation, CattaneoCase1Passes) {
   EXPECT_GE(r.cases[0].quantities.size(), 9u);  // FN FX FY MZ APPROACH PMAX NCON NADH NSLIP
 }
 
+TEST(Validation, ViscoelasticCylindersEqualContact) {
+  // visc_cylindr: four viscoelastic cases (TC = 0, 0.009, 0.045, 2 s) and their two elastic
+  // limits; CREEP X, APPROACH, PMAX and the element counts within the validation tolerances.
+  REQUIRE_EXAMPLES();
+  const TemporaryFolder out;
+  const ExampleFiles files{"visc_cylindr", kExamples / "visc_cylindr.inp",
+                           kExamples / "visc_cylindr.ref_out"};
+  const auto r = validate_example(files, out.path(), ValidationOptions{});
+  EXPECT_TRUE(r.run_error.empty()) << r.run_error;
+  ASSERT_EQ(r.cases.size(), 6u);
+  EXPECT_EQ(r.count(CaseStatus::Passed), 6) << format_case_details(r);
+}
+
 TEST(Validation, UnreadableInputMakesEveryCaseNotSupported) {
   REQUIRE_EXAMPLES();
   const TemporaryFolder out;
