@@ -119,6 +119,29 @@ void friction_and_solver(const PatchProblem& p) {
   finite("solver.relaxation_slip", p.solver.relaxation_slip);
 }
 
+void thermal_body(std::string_view name, const ThermalBody& b) {
+  finite(fmt::format("heat.{}.bulk_temperature_C", name), b.bulk_temperature_C);
+  positive(fmt::format("heat.{}.heat_capacity_J_kgC", name), b.heat_capacity_J_kgC);
+  positive(fmt::format("heat.{}.conductivity_W_mmC", name), b.conductivity_W_mmC);
+  positive(fmt::format("heat.{}.density_kg_mm3", name), b.density_kg_mm3);
+}
+
+// The flash temperature of physics.md §15 is a steady-state result: steady rolling, or no
+// tangential problem (T=0: the bulk temperatures are the result).
+void heat(const PatchProblem& p) {
+  if (!p.heat.enabled) return;
+  thermal_body("body1", p.heat.body1);
+  thermal_body("body2", p.heat.body2);
+  const double beta = p.heat.plastic_heat_fraction;
+  if (!(std::isfinite(beta) && beta >= 0.0 && beta <= 1.0))
+    reject("heat.plastic_heat_fraction", beta, "must lie in [0, 1]");
+  const TangentialKind kind = p.tangential.kind;
+  if (kind != TangentialKind::None && kind != TangentialKind::SteadyRolling)
+    throw InvalidValueError("heat.enabled",
+                            ": the surface temperature needs steady rolling (or no tangential "
+                            "problem)");
+}
+
 void subsurface(const std::vector<SubsurfaceBlock>& blocks) {
   for (std::size_t b = 0; b < blocks.size(); ++b) {
     const SubsurfaceBlock& s = blocks[b];
@@ -140,6 +163,7 @@ void validate(const PatchProblem& problem) {
   body("body2", problem.bodies.body2);
   friction_and_solver(problem);
   loading(problem);
+  heat(problem);
   subsurface(problem.subsurface);
 }
 
