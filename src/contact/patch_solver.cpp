@@ -20,6 +20,7 @@
 #include "normal/normal_solver.hpp"
 #include "physics/friction_law.hpp"
 #include "post/subsurface.hpp"
+#include "post/surface_temperature.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/model/validation.hpp"
 #include "rollcontact/solve.hpp"
@@ -279,6 +280,8 @@ class CaseSolver {
   void add_unshifted_displacement(const Field& px, const Field& py, const Field& pn, Field& ux,
                                   Field& uy) const;
   void compute_totals(const tangential::TangentialResult* tang);
+  /// H ≥ 1: TEMP1, TEMP2 and their maxima from the final solution (physics.md §15).
+  void compute_temperatures();
 
   const model::PatchProblem& problem_;
   PatchSolver::Impl& st_;
@@ -295,6 +298,7 @@ class CaseSolver {
   Field mu_;                    ///< velocity-dependent friction: μ per element of the last solve
   bool layer_plastic_ = false;  ///< M=4 with TAU_C0 > 0
   contact::PlasticHistory plastic_history_;
+  Field plastic_flow_;  ///< |Δu_pl| [mm] of this step in Plastic elements (empty: none)
   TangentialOperators* tops_ = nullptr;
   std::vector<std::string> notes_;
 };
@@ -829,6 +833,7 @@ void CaseSolver::run() {
   } else {
     compute_totals(nullptr);
   }
+  if (problem_.heat.enabled) compute_temperatures();
   for (auto& note : notes_) sol_.warnings.push_back(std::move(note));
 }
 
@@ -889,6 +894,9 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
         if (tang->state[i] != ElementState::Plastic) {
           s.sx[i] = tang->sx[i] / dq;
           s.sy[i] = tang->sy[i] / dq;
+        } else {
+          if (plastic_flow_.empty()) plastic_flow_.assign(n, 0.0);
+          plastic_flow_[i] = std::hypot(tang->sx[i], tang->sy[i]);  // |Δu_pl| = |−S|
         }
       } else {
         s.state[i] = ElementState::Adhesion;  // CONTACT prints '*' without a tangential problem
@@ -909,6 +917,16 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   // N·mm → J; not defined with prescribed pressures (u_n unknown) or the simplified theory.
   t.elastic_energy = prescribed_ || simplified_ ? 0.0 : 0.5e-3 * energy * area;
   t.frictional_power = 1e-3 * power * area / s.kinematics.dt;  // N·mm/s → W (T=1: J per step)
+}
+
+void CaseSolver::compute_temperatures() {
+  const bool rolling = problem_.tangential.kind == model::TangentialKind::SteadyRolling;
+  post::SurfaceTemperatures t =
+      post::surface_temperatures(problem_.heat, sol_, rolling, plastic_flow_);
+  sol_.temp1 = std::move(t.temp1);
+  sol_.temp2 = std::move(t.temp2);
+  sol_.totals.max_temp1 = t.max1;
+  sol_.totals.max_temp2 = t.max2;
 }
 
 }  // namespace
