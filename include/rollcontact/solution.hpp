@@ -90,7 +90,8 @@ struct SolverReport {
   /// less of a fine one.
   int tangential_coarse_iterations = 0;
   int newton_iterations = 0;
-  /// Passes of the slip-velocity fixed point (velocity-dependent friction) and its trace.
+  /// Passes of the slip-velocity fixed point (velocity-dependent friction) or of the
+  /// temperature fixed point (temperature-dependent friction), and its trace.
   int slip_velocity_passes = 0;
   std::vector<std::string> slip_velocity_trace;
 };

@@ -109,6 +109,20 @@ void friction_and_solver(const PatchProblem& p) {
     at_least("friction.memory_distance_mm", p.friction.memory_distance_mm, 0.0);
     at_least("friction.memory_floor_speed_mm_s", p.friction.memory_floor_speed_mm_s, 0.0);
   }
+  if (p.friction.temperature_dependent()) {
+    const TemperatureTerm& t = p.friction.temperature;
+    finite("friction.temperature.reference_temperature_C", t.reference_temperature_C);
+    finite("friction.temperature.change", t.change);
+    positive("friction.temperature.temperature_span_C", t.temperature_span_C);
+    at_least("friction.memory_distance_mm", p.friction.memory_distance_mm, 0.0);
+    at_least("friction.memory_floor_speed_mm_s", p.friction.memory_floor_speed_mm_s, 0.0);
+    // μ(T) needs the surface temperature of the exact steady-rolling solution (§10.3, §15).
+    if (!p.heat.enabled)
+      throw InvalidValueError("friction.law", ": temperature-dependent friction needs heat");
+    if (p.bodies.compliance != TangentialCompliance::ExactHalfSpace)
+      throw InvalidValueError("friction.law",
+                              ": temperature-dependent friction needs the exact theory");
+  }
   const SimplifiedParameters& s = p.bodies.simplified;
   finite("bodies.simplified.flexibility_mm3_N", s.flexibility_mm3_N);
   finite("bodies.simplified.k0", s.k0);

@@ -42,7 +42,7 @@ struct PatchProblem {
   Rolling rolling;
   SolverOptions solver;
   SequenceLink sequence;
-  SurfaceHeat heat;                         ///< surface temperature wanted (steady rolling)
+  SurfaceHeat heat{};                       ///< surface temperature wanted (steady rolling)
   std::vector<SubsurfaceBlock> subsurface;  ///< stresses wanted at these points (empty: none)
 };
 

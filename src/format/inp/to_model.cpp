@@ -127,6 +127,12 @@ model::Friction to_model_friction(int law, const FrictionValues& f, double memds
     m.memory_distance_mm = memdst;
     m.memory_floor_speed_mm_s = mem_s0;
   }
+  if (law == 6) {  // FREF (in fkin and fstat), TREF DFHEAT DTHEAT
+    m.law = model::FrictionLawKind::TemperatureDependent;
+    m.temperature = {f.params[0], f.params[1], f.params[2]};
+    m.memory_distance_mm = memdst;
+    m.memory_floor_speed_mm_s = mem_s0;
+  }
   return m;
 }
 
@@ -148,8 +154,8 @@ void check_supported(const CaseRecord& record) {
     not_supported(fmt::format("temperature H={} with T={} (steady rolling only)", d.h, d.t));
   if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
   if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
-  if (d.t >= 1 && record.friction.law == 6)
-    not_supported(fmt::format("friction law L={}", record.friction.law));
+  if ((d.t == 1 || d.t == 2) && record.friction.law == 6)
+    not_supported(fmt::format("friction law L={} with T={}", record.friction.law, d.t));
   // Fastsim solves falling friction element by element (simplified/fastsim.hpp); CONTACT's
   // tractcurv cases 91-120 are not reproduced yet (docs/decisions.md), so input files wait.
   if (record.friction.law != 0 && d.t >= 1 && (d.m == 2 || d.m == 3 || d.m == 5))

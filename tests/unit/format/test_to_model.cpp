@@ -120,7 +120,7 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r = basic_record();
   r.digits.t = 2;
   r.friction.law = 6;
-  EXPECT_EQ(message_of(r), "not supported yet: friction law L=6");
+  EXPECT_EQ(message_of(r), "not supported yet: friction law L=6 with T=2");
   r = basic_record();
   r.digits.t = 3;
   r.digits.m = 5;
@@ -160,6 +160,27 @@ TEST(ToModel, HeatLinesBecomeTheThermalBodies) {
   EXPECT_DOUBLE_EQ(h.plastic_heat_fraction, 0.0);  // BETAPL only with the layer (M=4)
   r.digits.m = 4;
   EXPECT_DOUBLE_EQ(to_patch_problem(r).heat.plastic_heat_fraction, 0.5);
+}
+
+TEST(ToModel, TemperatureFrictionBecomesTheModelsLaw) {
+  // L=6 line FREF TREF DFHEAT DTHEAT (read into fkin = fstat = FREF and params) and memory.
+  CaseRecord r = basic_record();
+  r.digits.t = 3;
+  r.digits.h = 3;
+  r.friction.law = 6;
+  r.friction.fstat = r.friction.fkin = 0.35;
+  r.friction.params = {20.0, -0.1, 300.0, 0.0};
+  r.friction.memdst = 0.002;
+  r.friction.mem_s0 = 0.5;
+  const model::PatchProblem p = to_patch_problem(r);
+  EXPECT_TRUE(p.friction.temperature_dependent());
+  EXPECT_FALSE(p.friction.velocity_dependent());
+  EXPECT_DOUBLE_EQ(p.friction.static_coefficient, 0.35);
+  EXPECT_DOUBLE_EQ(p.friction.temperature.reference_temperature_C, 20.0);
+  EXPECT_DOUBLE_EQ(p.friction.temperature.change, -0.1);
+  EXPECT_DOUBLE_EQ(p.friction.temperature.temperature_span_C, 300.0);
+  EXPECT_DOUBLE_EQ(p.friction.memory_distance_mm, 0.002);
+  EXPECT_DOUBLE_EQ(p.friction.memory_floor_speed_mm_s, 0.5);
 }
 
 TEST(ToModel, FallingFrictionBecomesTheModelsLaw) {

@@ -137,5 +137,20 @@ TEST(ModelValidation, HeatParametersArePhysical) {
   EXPECT_EQ(rejected_field(p), "");
 }
 
+TEST(ModelValidation, TemperatureFrictionNeedsHeatAndTheExactTheory) {
+  PatchProblem p = valid_problem();
+  p.tangential.kind = TangentialKind::SteadyRolling;
+  p.friction.law = FrictionLawKind::TemperatureDependent;
+  p.friction.temperature = {20.0, -0.1, 300.0};
+  EXPECT_EQ(rejected_field(p), "friction.law");  // no temperature calculation
+  p.heat.enabled = true;
+  EXPECT_EQ(rejected_field(p), "");
+  p.friction.temperature.temperature_span_C = 0.0;
+  EXPECT_EQ(rejected_field(p), "friction.temperature.temperature_span_C");
+  p.friction.temperature.temperature_span_C = 300.0;
+  p.bodies.compliance = TangentialCompliance::FastsimThreeFlexibilities;
+  EXPECT_EQ(rejected_field(p), "friction.law");
+}
+
 }  // namespace
 }  // namespace rollcontact::model
