@@ -74,6 +74,8 @@ extern "C" {
 #define CNTC_fld_un 9
 #define CNTC_fld_sx 15
 #define CNTC_fld_sy 16
+#define CNTC_fld_temp1 20
+#define CNTC_fld_temp2 21
 
 /* Error codes. */
 #define CNTC_err_allow -12

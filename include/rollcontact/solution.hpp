@@ -83,6 +83,9 @@ struct Totals {
   double elastic_energy = 0.0;                      ///< [J] (= 1e-3 N·mm)
   double frictional_power = 0.0;                    ///< [W]; T=1: frictional work per step [J]
   double contact_area = 0.0;                        ///< [mm²]
+  /// Surface temperature (H ≥ 1): the maxima of TEMP1, TEMP2 over the contact [°C]; the report's
+  /// MAX(T1,T2) is the larger. 0 without the temperature calculation.
+  double max_temp1 = 0.0, max_temp2 = 0.0;
 };
 
 /// Element counts (CONTACT STATISTICS block).
@@ -109,7 +112,8 @@ struct SolverReport {
   /// less of a fine one.
   int tangential_coarse_iterations = 0;
   int newton_iterations = 0;
-  /// Passes of the slip-velocity fixed point (velocity-dependent friction) and its trace.
+  /// Passes of the slip-velocity fixed point (velocity-dependent friction) or of the
+  /// temperature fixed point (temperature-dependent friction), and its trace.
   int slip_velocity_passes = 0;
   std::vector<std::string> slip_velocity_trace;
 };
@@ -165,6 +169,8 @@ struct Solution {
   /// [mm], all carried to the next case of a sequence.
   std::vector<double> yield_limit, plastic_x, plastic_y, plastic_accumulated;
   std::vector<ElementState> state;
+  /// Surface temperatures of body 1 and body 2 [°C] (spec/physics.md §15; H ≥ 1, else empty).
+  std::vector<double> temp1, temp2;
   EffectiveKinematics kinematics;
   Sensitivities sensitivities;
   Totals totals;

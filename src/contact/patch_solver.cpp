@@ -14,6 +14,7 @@
 #include "contact/patch_solver_impl.hpp"
 #include "contact/result_check.hpp"
 #include "contact/slip_velocity_iteration.hpp"
+#include "contact/temperature_iteration.hpp"
 #include "elastic/material.hpp"
 #include "geometry/discretisation.hpp"
 #include "geometry/hertz.hpp"
@@ -21,6 +22,7 @@
 #include "normal/normal_solver.hpp"
 #include "physics/friction_law.hpp"
 #include "post/subsurface.hpp"
+#include "post/surface_temperature.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/model/validation.hpp"
 #include "rollcontact/solve.hpp"
@@ -275,11 +277,21 @@ class CaseSolver {
                                                      const Field* px0, const Field* py0);
   tangential::TangentialResult solve_velocity_dependent(double cksi, double ceta, double cphi,
                                                         const Field& px, const Field& py);
+  /// Temperature-dependent friction (L = 6): the temperature fixed point of physics.md §10.3
+  /// around solve_tangential(); tractions start from px, py.
+  tangential::TangentialResult solve_temperature_dependent(double cksi, double ceta, double cphi,
+                                                           const Field& px, const Field& py);
+  /// Body 1's surface temperature [°C] that the tangential solution `t` produces (§15).
+  Field body1_temperature(const tangential::TangentialResult& t) const;
+  /// What solve_velocity_dependent and solve_temperature_dependent share: memory of §10.2.
+  contact::FrictionMemoryInput friction_memory(const std::vector<char>& contact) const;
   void assemble_slip_at_zero_traction(tangential::TangentialSystem& sys, double cksi, double ceta,
                                       double cphi);
   void add_unshifted_displacement(const Field& px, const Field& py, const Field& pn, Field& ux,
                                   Field& uy) const;
   void compute_totals(const tangential::TangentialResult* tang);
+  /// H ≥ 1: TEMP1, TEMP2 and their maxima from the final solution (physics.md §15).
+  void compute_temperatures();
 
   const model::PatchProblem& problem_;
   PatchSolver::Impl& st_;
@@ -296,6 +308,7 @@ class CaseSolver {
   Field mu_;                    ///< velocity-dependent friction: μ per element of the last solve
   bool layer_plastic_ = false;  ///< M=4 with TAU_C0 > 0
   contact::PlasticHistory plastic_history_;
+  Field plastic_flow_;  ///< |Δu_pl| [mm] of this step in Plastic elements (empty: none)
   TangentialOperators* tops_ = nullptr;
   std::vector<std::string> notes_;
 };
@@ -544,6 +557,20 @@ void CaseSolver::assemble_slip_at_zero_traction(tangential::TangentialSystem& sy
   }
 }
 
+contact::FrictionMemoryInput CaseSolver::friction_memory(const std::vector<char>& contact) const {
+  contact::FrictionMemoryInput memory;
+  memory.grid = &grid_;
+  memory.contact = &contact;
+  memory.law = friction_.get();
+  memory.memory_distance_mm = problem_.friction.memory_distance_mm;
+  memory.memory_floor_speed_mm_s = problem_.friction.memory_floor_speed_mm_s;
+  memory.dt_s = sol_.kinematics.dt;
+  memory.steady = problem_.tangential.kind == model::TangentialKind::SteadyRolling;
+  memory.chi_rad = sol_.kinematics.chi;
+  memory.previous_mu = prev_.mu.empty() ? nullptr : &prev_.mu;
+  return memory;
+}
+
 tangential::TangentialResult CaseSolver::solve_velocity_dependent(double cksi, double ceta,
                                                                   double cphi, const Field& px,
                                                                   const Field& py) {
@@ -551,16 +578,7 @@ tangential::TangentialResult CaseSolver::solve_velocity_dependent(double cksi, d
   const EffectiveKinematics& k = sol_.kinematics;
   std::vector<char> contact(n, 0);
   for (std::size_t i = 0; i < n; ++i) contact[i] = sol_.pn[i] > 0.0;
-  contact::FrictionMemoryInput memory;
-  memory.grid = &grid_;
-  memory.contact = &contact;
-  memory.law = friction_.get();
-  memory.memory_distance_mm = problem_.friction.memory_distance_mm;
-  memory.memory_floor_speed_mm_s = problem_.friction.memory_floor_speed_mm_s;
-  memory.dt_s = k.dt;
-  memory.steady = problem_.tangential.kind == model::TangentialKind::SteadyRolling;
-  memory.chi_rad = k.chi;
-  memory.previous_mu = prev_.mu.empty() ? nullptr : &prev_.mu;
+  const contact::FrictionMemoryInput memory = friction_memory(contact);
 
   Field speed(n, 0.0);
   switch (problem_.solver.initial_slip_velocity) {
@@ -588,6 +606,73 @@ tangential::TangentialResult CaseSolver::solve_velocity_dependent(double cksi, d
         start_y = t.py;
         return t;
       });
+  sol_.solver.slip_velocity_passes += r.passes;
+  sol_.solver.slip_velocity_trace = std::move(r.trace);
+  mu_ = std::move(r.mu);
+  tangential::TangentialResult tang = std::move(r.tangential);
+  tang.iterations = 0;  // counted per pass above
+  if (!r.converged && tang.converged) {
+    tang.converged = false;
+    tang.message = r.message;
+  }
+  return tang;
+}
+
+Field CaseSolver::body1_temperature(const tangential::TangentialResult& t) const {
+  const std::size_t n = grid_.size();
+  Solution s;  // the fields §15 reads, from the provisional tangential solution
+  s.grid = grid_;
+  s.pn = sol_.pn;
+  s.px = t.px;
+  s.py = t.py;
+  s.state = t.state;
+  s.kinematics = sol_.kinematics;
+  s.sx.assign(n, 0.0);
+  s.sy.assign(n, 0.0);
+  Field flow;  // |Δu_pl| of Plastic elements, which do not slide (compute_totals)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (t.state[i] == ElementState::Plastic) {
+      if (flow.empty()) flow.assign(n, 0.0);
+      flow[i] = std::hypot(t.sx[i], t.sy[i]);
+      continue;
+    }
+    s.sx[i] = t.sx[i] / s.kinematics.dq;
+    s.sy[i] = t.sy[i] / s.kinematics.dq;
+  }
+  return post::surface_temperatures(problem_.heat, s, true, flow).temp1;
+}
+
+tangential::TangentialResult CaseSolver::solve_temperature_dependent(double cksi, double ceta,
+                                                                     double cphi, const Field& px,
+                                                                     const Field& py) {
+  const std::size_t n = grid_.size();
+  std::vector<char> contact(n, 0);
+  for (std::size_t i = 0; i < n; ++i) contact[i] = sol_.pn[i] > 0.0;
+  // Start from the temperatures without frictional heat (bulk, and the contact temperature in
+  // the contact): a solution with every element adhering.
+  tangential::TangentialResult cold;
+  cold.px.assign(n, 0.0);
+  cold.py.assign(n, 0.0);
+  cold.sx.assign(n, 0.0);
+  cold.sy.assign(n, 0.0);
+  cold.state.assign(n, ElementState::Exterior);
+  for (std::size_t i = 0; i < n; ++i)
+    if (contact[i]) cold.state[i] = ElementState::Adhesion;
+  contact::TemperatureIterationSettings settings;
+  settings.relaxation = problem_.solver.slip_velocity_relaxation;
+  settings.max_passes = problem_.solver.max_slip_velocity_passes;
+  Field start_x = px, start_y = py;
+  contact::TemperatureIterationOutcome r = contact::solve_with_temperature(
+      friction_memory(contact), body1_temperature(cold), settings,
+      [&](const Field& mu) {
+        tangential::TangentialResult t =
+            solve_tangential(cksi, ceta, cphi, &start_x, &start_y, &mu);
+        sol_.solver.tangential_iterations += t.iterations;
+        start_x = t.px;
+        start_y = t.py;
+        return t;
+      },
+      [&](const tangential::TangentialResult& t) { return body1_temperature(t); });
   sol_.solver.slip_velocity_passes += r.passes;
   sol_.solver.slip_velocity_trace = std::move(r.trace);
   mu_ = std::move(r.mu);
@@ -757,9 +842,14 @@ void CaseSolver::run() {
     if (!tangential) break;
     auto evaluate = [&](double cksi, double ceta) {
       const double cphi = creepage.spin_rad_per_mm;
-      tang = simplified_                       ? solve_simplified(cksi, ceta, cphi)
-             : friction_->velocity_dependent() ? solve_velocity_dependent(cksi, ceta, cphi, px, py)
-                                               : solve_tangential(cksi, ceta, cphi, &px, &py);
+      if (simplified_)
+        tang = solve_simplified(cksi, ceta, cphi);
+      else if (friction_->velocity_dependent())
+        tang = solve_velocity_dependent(cksi, ceta, cphi, px, py);
+      else if (friction_->temperature_dependent())
+        tang = solve_temperature_dependent(cksi, ceta, cphi, px, py);
+      else
+        tang = solve_tangential(cksi, ceta, cphi, &px, &py);
       sol_.solver.tangential_iterations += tang.iterations;
       px = tang.px;
       py = tang.py;
@@ -838,6 +928,7 @@ void CaseSolver::run() {
   } else {
     compute_totals(nullptr);
   }
+  if (problem_.heat.enabled) compute_temperatures();
   for (auto& note : notes_) sol_.warnings.push_back(std::move(note));
 }
 
@@ -898,6 +989,9 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
         if (tang->state[i] != ElementState::Plastic) {
           s.sx[i] = tang->sx[i] / dq;
           s.sy[i] = tang->sy[i] / dq;
+        } else {
+          if (plastic_flow_.empty()) plastic_flow_.assign(n, 0.0);
+          plastic_flow_[i] = std::hypot(tang->sx[i], tang->sy[i]);  // |Δu_pl| = |−S|
         }
       } else {
         s.state[i] = ElementState::Adhesion;  // CONTACT prints '*' without a tangential problem
@@ -918,6 +1012,16 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   // N·mm → J; not defined with prescribed pressures (u_n unknown) or the simplified theory.
   t.elastic_energy = prescribed_ || simplified_ ? 0.0 : 0.5e-3 * energy * area;
   t.frictional_power = 1e-3 * power * area / s.kinematics.dt;  // N·mm/s → W (T=1: J per step)
+}
+
+void CaseSolver::compute_temperatures() {
+  const bool rolling = problem_.tangential.kind == model::TangentialKind::SteadyRolling;
+  post::SurfaceTemperatures t =
+      post::surface_temperatures(problem_.heat, sol_, rolling, plastic_flow_);
+  sol_.temp1 = std::move(t.temp1);
+  sol_.temp2 = std::move(t.temp2);
+  sol_.totals.max_temp1 = t.max1;
+  sol_.totals.max_temp2 = t.max2;
 }
 
 }  // namespace

@@ -44,7 +44,9 @@ std::string first_non_finite(const Solution& s) {
                                 {"SHIFT_Y", t.shift_y},
                                 {"ELEN", t.elastic_energy},
                                 {"FRPOWER", t.frictional_power},
-                                {"contact area", t.contact_area}});
+                                {"contact area", t.contact_area},
+                                {"MAX(T1)", t.max_temp1},
+                                {"MAX(T2)", t.max_temp2}});
   if (found.empty())
     found = first_in({NamedField{"pn", &s.pn},
                       {"px", &s.px},
@@ -54,7 +56,9 @@ std::string first_non_finite(const Solution& s) {
                       {"uy", &s.uy},
                       {"sx", &s.sx},
                       {"sy", &s.sy},
-                      {"h", &s.h}});
+                      {"h", &s.h},
+                      {"temp1", &s.temp1},
+                      {"temp2", &s.temp2}});
   for (const SubsurfaceResult& r : s.subsurface) {
     if (!found.empty()) break;
     found = first_in({NamedField{"subsurface ux", &r.ux},

@@ -42,7 +42,9 @@ FrictionField friction_with_memory(const FrictionMemoryInput& in, const Field& s
   f.mu_prime.assign(n, mu_static);
   auto relax = [&](std::size_t i) {
     const double theta = memory_weight(in, speed[i]);
-    f.mu[i] = theta * f.mu_prime[i] + (1.0 - theta) * in.law->coefficient_at(speed[i]);
+    const double target =
+        in.target_mu != nullptr ? (*in.target_mu)[i] : in.law->coefficient_at(speed[i]);
+    f.mu[i] = theta * f.mu_prime[i] + (1.0 - theta) * target;
   };
   if (!in.steady) {
     for (std::size_t i = 0; i < n; ++i) {

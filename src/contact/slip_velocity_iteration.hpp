@@ -32,6 +32,9 @@ struct FrictionMemoryInput {
   /// Shifts and transient rolling: μ of the previous time per element (empty, or negative
   /// entries: μ_static).
   const Field* previous_mu = nullptr;
+  /// μ_s per element that memory relaxes towards (temperature-dependent friction: μ(T) of each
+  /// element); nullptr: the law's μ(s_a) at the element's slip velocity.
+  const Field* target_mu = nullptr;
 };
 
 /// μ per element (μ_static outside the contact) and μ′, the value it relaxed from.

@@ -120,6 +120,20 @@ void friction_and_solver(const PatchProblem& p) {
                               ": viscoelastic bodies need steady rolling (T=3)");
     positive("rolling.velocity_mm_per_s", p.rolling.velocity_mm_per_s);
   }
+  if (p.friction.temperature_dependent()) {
+    const TemperatureTerm& t = p.friction.temperature;
+    finite("friction.temperature.reference_temperature_C", t.reference_temperature_C);
+    finite("friction.temperature.change", t.change);
+    positive("friction.temperature.temperature_span_C", t.temperature_span_C);
+    at_least("friction.memory_distance_mm", p.friction.memory_distance_mm, 0.0);
+    at_least("friction.memory_floor_speed_mm_s", p.friction.memory_floor_speed_mm_s, 0.0);
+    // μ(T) needs the surface temperature of the exact steady-rolling solution (§10.3, §15).
+    if (!p.heat.enabled)
+      throw InvalidValueError("friction.law", ": temperature-dependent friction needs heat");
+    if (p.bodies.compliance != TangentialCompliance::ExactHalfSpace)
+      throw InvalidValueError("friction.law",
+                              ": temperature-dependent friction needs the exact theory");
+  }
   const SimplifiedParameters& s = p.bodies.simplified;
   finite("bodies.simplified.flexibility_mm3_N", s.flexibility_mm3_N);
   finite("bodies.simplified.k0", s.k0);
@@ -128,6 +142,29 @@ void friction_and_solver(const PatchProblem& p) {
   positive("solver.tolerance", p.solver.tolerance);
   finite("solver.relaxation_adhesion", p.solver.relaxation_adhesion);
   finite("solver.relaxation_slip", p.solver.relaxation_slip);
+}
+
+void thermal_body(std::string_view name, const ThermalBody& b) {
+  finite(fmt::format("heat.{}.bulk_temperature_C", name), b.bulk_temperature_C);
+  positive(fmt::format("heat.{}.heat_capacity_J_kgC", name), b.heat_capacity_J_kgC);
+  positive(fmt::format("heat.{}.conductivity_W_mmC", name), b.conductivity_W_mmC);
+  positive(fmt::format("heat.{}.density_kg_mm3", name), b.density_kg_mm3);
+}
+
+// The flash temperature of physics.md §15 is a steady-state result: steady rolling, or no
+// tangential problem (T=0: the bulk temperatures are the result).
+void heat(const PatchProblem& p) {
+  if (!p.heat.enabled) return;
+  thermal_body("body1", p.heat.body1);
+  thermal_body("body2", p.heat.body2);
+  const double beta = p.heat.plastic_heat_fraction;
+  if (!(std::isfinite(beta) && beta >= 0.0 && beta <= 1.0))
+    reject("heat.plastic_heat_fraction", beta, "must lie in [0, 1]");
+  const TangentialKind kind = p.tangential.kind;
+  if (kind != TangentialKind::None && kind != TangentialKind::SteadyRolling)
+    throw InvalidValueError("heat.enabled",
+                            ": the surface temperature needs steady rolling (or no tangential "
+                            "problem)");
 }
 
 void subsurface(const std::vector<SubsurfaceBlock>& blocks) {
@@ -151,6 +188,7 @@ void validate(const PatchProblem& problem) {
   body("body2", problem.bodies.body2);
   friction_and_solver(problem);
   loading(problem);
+  heat(problem);
   subsurface(problem.subsurface);
 }
 

@@ -35,13 +35,21 @@ double FallingFrictionLaw::coefficient_at(double slip_speed_mm_s) const {
       return kinetic_ + t1.coefficient * std::exp2(-s / t1.speed_mm_s) +
              t2.coefficient * std::exp2(-s / t2.speed_mm_s);
     case model::FrictionLawKind::Coulomb:
+    case model::FrictionLawKind::TemperatureDependent:
       break;
   }
   return static_coefficient_;
 }
 
+double TemperatureFrictionLaw::coefficient_at_temperature(double temperature_C) const {
+  const double fraction = std::clamp(
+      (temperature_C - term_.reference_temperature_C) / term_.temperature_span_C, 0.0, 1.0);
+  return reference_ + term_.change * fraction;
+}
+
 std::unique_ptr<FrictionLaw> make_friction_law(const model::Friction& friction) {
   if (friction.velocity_dependent()) return std::make_unique<FallingFrictionLaw>(friction);
+  if (friction.temperature_dependent()) return std::make_unique<TemperatureFrictionLaw>(friction);
   return std::make_unique<CoulombLaw>(friction.static_coefficient);
 }
 

@@ -32,6 +32,16 @@ class FrictionLaw {
   /// True when μ depends on the slip velocity (the solution needs the fixed point of §10.3).
   [[nodiscard]] virtual bool velocity_dependent() const { return false; }
 
+  /// True when μ depends on the surface temperature of body 1 (L = 6: the temperature fixed
+  /// point of §10.3).
+  [[nodiscard]] virtual bool temperature_dependent() const { return false; }
+
+  /// μ at body 1's surface temperature `temperature_C` [°C]; coefficient() unless L = 6.
+  [[nodiscard]] virtual double coefficient_at_temperature(double temperature_C) const {
+    (void)temperature_C;
+    return coefficient();
+  }
+
   /// g for every element of `pressure_N_mm2` (g = 0 where the pressure is not positive).
   void traction_bounds(const std::vector<double>& pressure_N_mm2, std::vector<double>& bound) const;
 };
@@ -66,6 +76,24 @@ class FallingFrictionLaw final : public FrictionLaw {
   double kinetic_;
   std::array<model::FallingTerm, 2> terms_;
   double static_coefficient_;
+};
+
+/// Temperature-dependent friction (CONTACT's L = 6): μ(T) = FREF + ΔF·clamp((T − T_ref)/ΔT, 0, 1).
+/// Its static value FREF bounds the tractions until a temperature is known.
+class TemperatureFrictionLaw final : public FrictionLaw {
+ public:
+  explicit TemperatureFrictionLaw(const model::Friction& friction)
+      : reference_(friction.static_coefficient), term_(friction.temperature) {}
+  [[nodiscard]] double traction_bound(double pressure_N_mm2) const override {
+    return reference_ * pressure_N_mm2;
+  }
+  [[nodiscard]] double coefficient() const override { return reference_; }
+  [[nodiscard]] bool temperature_dependent() const override { return true; }
+  [[nodiscard]] double coefficient_at_temperature(double temperature_C) const override;
+
+ private:
+  double reference_;
+  model::TemperatureTerm term_;
 };
 
 /// The law that `friction` of the model describes.

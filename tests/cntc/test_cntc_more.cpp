@@ -70,6 +70,27 @@ TEST(CntcSubsurface, StressOnTheAxisFollowsHertz) {
   cntc_finalize(&r);
 }
 
+TEST(CntcTemperature, WithoutTangentialProblemTheBulkTemperaturesAreReturned) {
+  // H = 3 with T = 0 (v25.1): the bulk temperatures are the result, as maxima and as fields.
+  const int ire = 45;
+  int r = ire, icp = 1, ierror = 0;
+  hertz_normal(ire, 21);
+  int h = 3, nparam = 9;
+  double heat[] = {20.0, 450.0, 50e-3, 7.85e-6, 150.0, 450.0, 50e-3, 7.85e-6, 0.0};
+  cntc_settemperaturedata(&r, &icp, &h, &nparam, heat);
+  cntc_calculate(&r, &icp, &ierror);
+  ASSERT_GE(ierror, 0);
+  double t1 = 0.0, t2 = 0.0;
+  cntc_getmaximumtemperature(&r, &icp, &t1, &t2);
+  EXPECT_DOUBLE_EQ(t1, 20.0);
+  EXPECT_DOUBLE_EQ(t2, 150.0);
+  int ifld = CNTC_fld_temp2, lenarr = 4;
+  std::array<double, 4> field{};
+  cntc_getfielddata(&r, &icp, &ifld, &lenarr, field.data());
+  EXPECT_TRUE(std::all_of(field.begin(), field.end(), [](double v) { return v == 150.0; }));
+  cntc_finalize(&r);
+}
+
 TEST(CntcParameters, MaterialAndFrictionReadBack) {
   const int ire = 42;
   int r = ire, icp = 1, ierror = 0;

@@ -9,6 +9,7 @@
 #include "rollcontact/model/bodies.hpp"
 #include "rollcontact/model/friction.hpp"
 #include "rollcontact/model/geometry.hpp"
+#include "rollcontact/model/heat.hpp"
 #include "rollcontact/model/loading.hpp"
 #include "rollcontact/model/solver_options.hpp"
 
@@ -41,6 +42,7 @@ struct PatchProblem {
   Rolling rolling;
   SolverOptions solver;
   SequenceLink sequence;
+  SurfaceHeat heat{};                       ///< surface temperature wanted (steady rolling)
   std::vector<SubsurfaceBlock> subsurface;  ///< stresses wanted at these points (empty: none)
 };
 

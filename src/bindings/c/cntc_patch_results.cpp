@@ -224,9 +224,16 @@ CNTC_EXPORT void cntc_getfielddata(int* ire, int* icp, int* ifld, int* lenarr, d
       return copy_field(*v, s.sx, lenarr, fld, body);
     case CNTC_fld_sy:
       return copy_field(*v, s.sy, lenarr, fld, body * y);
+    case CNTC_fld_temp1:  // [°C]; computed with H >= 1 only
+      if (!s.temp1.empty()) return copy_field(*v, s.temp1, lenarr, fld, 1.0);
+      break;
+    case CNTC_fld_temp2:
+      if (!s.temp2.empty()) return copy_field(*v, s.temp2, lenarr, fld, 1.0);
+      break;
     default:
-      library().log(fmt::format("cntc_getfielddata: field {} does not exist", *ifld));
+      break;
   }
+  library().log(fmt::format("cntc_getfielddata: field {} does not exist", *ifld));
 }
 
 CNTC_EXPORT void cntc_gettractions(int* ire, int* icp, int* lenarr, double* pn, double* px,
@@ -272,9 +279,9 @@ CNTC_EXPORT void cntc_resetcalculationtime(int* ire, int* icp) {
 CNTC_EXPORT void cntc_getmaximumtemperature(int* ire, int* icp, double* t1max, double* t2max) {
   const auto v = patch_of(ire, icp, "cntc_getmaximumtemperature");
   if (!v || t1max == nullptr || t2max == nullptr) return;
-  // Temperatures are not computed yet (H >= 1 is refused by calculate): H = 0 gives 0 and 0.
-  *t1max = 0.0;
-  *t2max = 0.0;
+  // Maxima over the contact [°C] (no unit conversion); 0 and 0 without the calculation (H = 0).
+  *t1max = v->s->totals.max_temp1;
+  *t2max = v->s->totals.max_temp2;
 }
 
 CNTC_EXPORT void cntc_getsensitivities(int* ire, int* icp, int* lenout, int* lenin, double* sens) {

@@ -314,8 +314,9 @@ void check_rolling_model_digits(InpStream& in, const ControlDigits& d, bool has_
                                 const std::string& element, int line2, int line3) {
   if (d.m == 1 && d.t != 3)
     in.fail(line2, fmt::format("M=1 (viscoelastic) requires T=3, not T={}", d.t));
-  if (d.h >= 1 && d.t != 3)
-    in.fail(line3, fmt::format("H={} (temperature) requires T=3, not T={}", d.h, d.t));
+  // v25.1 (spec-additions B3): T=0 is allowed too, the bulk temperatures are then the result.
+  if (d.h >= 1 && d.t != 3 && d.t != 0)
+    in.fail(line3, fmt::format("H={} (temperature) requires T=3 (or T=0), not T={}", d.h, d.t));
   if (d.h == 1 && !has_heat) {
     in.fail(line3, fmt::format("H=1 uses stored heat parameters, but none were read for {} (use "
                                "H=3)",

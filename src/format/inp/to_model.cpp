@@ -50,6 +50,18 @@ model::Bodies bodies_of(const CaseRecord& r) {
   return b;
 }
 
+// H >= 1: both bodies as conducting half-spaces (H=1 keeps the stored parameters, which the
+// readers carry in the record).
+model::SurfaceHeat heat_of(const CaseRecord& r) {
+  const HeatParameters& h = r.heat;
+  model::SurfaceHeat s;
+  s.enabled = r.digits.h >= 1;
+  s.body1 = {h.bktemp1, h.heatcp1, h.lambda1, h.dens1};
+  s.body2 = {h.bktemp2, h.heatcp2, h.lambda2, h.dens2};
+  s.plastic_heat_fraction = r.digits.m == 4 ? h.betapl : 0.0;
+  return s;
+}
+
 model::NormalLoading normal_of(const CaseRecord& r) {
   model::NormalLoading n;
   n.kind = r.digits.n == 1 ? model::NormalLoadKind::Force : model::NormalLoadKind::Approach;
@@ -121,6 +133,12 @@ model::Friction to_model_friction(int law, const FrictionValues& f, double memds
     m.memory_distance_mm = memdst;
     m.memory_floor_speed_mm_s = mem_s0;
   }
+  if (law == 6) {  // FREF (in fkin and fstat), TREF DFHEAT DTHEAT
+    m.law = model::FrictionLawKind::TemperatureDependent;
+    m.temperature = {f.params[0], f.params[1], f.params[2]};
+    m.memory_distance_mm = memdst;
+    m.memory_floor_speed_mm_s = mem_s0;
+  }
   return m;
 }
 
@@ -140,11 +158,12 @@ void check_supported(const CaseRecord& record) {
   if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
   if (d.c == 3 || d.c == 4 || d.c == 9)
     not_supported(fmt::format("influence coefficients C={}", d.c));
-  if (d.h != 0) not_supported(fmt::format("temperature H={}", d.h));
+  if (d.h != 0 && d.t != 0 && d.t != 3)
+    not_supported(fmt::format("temperature H={} with T={} (steady rolling only)", d.h, d.t));
   if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
   if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
-  if (d.t >= 1 && record.friction.law == 6)
-    not_supported(fmt::format("friction law L={}", record.friction.law));
+  if ((d.t == 1 || d.t == 2) && record.friction.law == 6)
+    not_supported(fmt::format("friction law L={} with T={}", record.friction.law, d.t));
   // Fastsim solves falling friction element by element (simplified/fastsim.hpp); CONTACT's
   // tractcurv cases 91-120 are not reproduced yet (docs/decisions.md), so input files wait.
   if (record.friction.law != 0 && d.t >= 1 && (d.m == 2 || d.m == 3 || d.m == 5))
@@ -171,6 +190,7 @@ model::PatchProblem to_patch_problem(const CaseRecord& record) {
   p.sequence.continue_previous = d.p != 2;
   p.sequence.becomes_previous = d.p != 3;
   p.sequence.force_iteration_from_previous = !(d.i == 0 || d.i == 2);
+  if (d.h >= 1) p.heat = heat_of(record);
   if (d.s >= 1) p.subsurface = record.subsurface.blocks;
   return p;
 }

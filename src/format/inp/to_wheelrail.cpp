@@ -87,6 +87,9 @@ void check_supported(const WheelRailRecord& r) {
   if (r.wheel.smooth > 0 && r.wheel.ismooth == 2) not_supported("ISMOOTH=2 (wheel profile)");
   if (d.gapwgt != 0) not_supported(fmt::format("GAPWGT={}", d.gapwgt));
   if (r.discretisation.g_miss > 0) not_supported("near misses (G_MISS > 0)");
+  // Patches could compute surface temperatures (module 3 does), but the wheel/rail reports do not
+  // print them and no module-1 reference has them yet.
+  if (d.h != 0) not_supported(fmt::format("temperature H={} (not yet validated)", d.h));
 }
 
 model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {

@@ -43,6 +43,10 @@ nlohmann::json case_to_json(const CaseRecord& problem, const Solution& solution)
       {"elastic_energy", t.elastic_energy},
       {"frictional_power", t.frictional_power},
   };
+  if (dg.h >= 1) {  // surface temperature (docs/results-json.md)
+    j["totals"]["max_temp1"] = t.max_temp1;
+    j["totals"]["max_temp2"] = t.max_temp2;
+  }
   const auto& s = solution.statistics;
   j["statistics"] = {{"npot", s.npot},   {"ncon", s.ncon},     {"nadh", s.nadh},
                      {"nslip", s.nslip}, {"nplast", s.nplast}, {"inorm", s.inorm},

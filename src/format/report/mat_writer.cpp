@@ -277,15 +277,17 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution,
         row += g14(v);
       }
       int filled = 11;
-      if (plastic && !solution.yield_limit.empty()) {
+      if (plastic) {
         for (const double v : {at(solution.yield_limit, i), at(solution.plastic_x, i),
                                lateral * at(solution.plastic_y, i)})
           row += g14(v);
         filled += 3;
       }
-      // Temperature fields are not part of the Solution yet: zero columns keep the layout that
-      // the Matlab scripts expect.
-      row += zeros(ncol - filled);
+      if (heat) {  // surface temperatures [°C] (0 where a solution has none)
+        row += g14(at(solution.temp1, i)) + g14(at(solution.temp2, i));
+        filled += 2;
+      }
+      row += zeros(ncol - filled);  // none left: the columns are the header's
       out += row + "\n";
     }
   }

@@ -41,12 +41,16 @@ void write_header(std::ostream& os, int t, int h) {
     return;
   }
   line(os, " S IS THE RELATIVE SLIP VELOCITY, WHICH IS OPPOSITE TO THE TANGENTIAL TRACTION.");
-  line(os, " RIGID SLIP(X, Y) ARE THE (X, Y) COMPONENTS OF THE RELATIVE RIGID SLIP VELOCITY W.");
+  // H >= 1: the surface temperatures take the place of the rigid slip (spec/outputs.md §3.6).
+  if (h >= 1)
+    line(os, " TEMP1, TEMP2 ARE THE SURFACE TEMPERATURES OF BODY 1 AND BODY 2 IN DEGREES C.");
+  else
+    line(os, " RIGID SLIP(X, Y) ARE THE (X, Y) COMPONENTS OF THE RELATIVE RIGID SLIP VELOCITY W.");
   line(os,
        " X, H AND PEN ARE IN MM, PN AND PT ARE IN N/MM^2, S AND W ARE DIMENSIONLESS, ARGUMENT IS "
        "IN DEGREES.");
   line(os, "");
-  line(os, columns + "RIGID SLIP(X, Y)" + (h >= 1 ? "        TEMP1      TEMP2" : ""));
+  line(os, columns + (h >= 1 ? " TEMP1      TEMP2" : "RIGID SLIP(X, Y)"));
 }
 
 }  // namespace
@@ -98,13 +102,13 @@ void write_element_table(std::ostream& os, const CaseRecord& problem, const Solu
           state == ElementState::Slip ? std::hypot(at(solution.sx, i), at(solution.sy, i)) : 0.0;
       const double wx = c.x - (spin_x ? c.phi * (y - kin.spinyo + std::sin(ek.chi) * offset) : 0.0);
       const double wy = c.y + (spin_y ? c.phi * (x - kin.spinxo + std::cos(ek.chi) * offset) : 0.0);
-      std::string row = " " + fortran_g(x, 12, 4) + fortran_g(h_pen, 11, 3) + fortran_g(pn, 11, 3) +
-                        fortran_g(trcbnd, 11, 3) + fortran_g(pt_abs, 11, 3) +
-                        fortran_f(pt_arg, 10, 1) + "  " + fortran_g(s_abs, 11, 3) +
-                        fortran_g(wx, 11, 3) + fortran_g(wy, 11, 3);
-      if (d.h >= 1)
-        row += fortran_g(0.0, 11, 4) + fortran_g(0.0, 11, 4);  // temperatures not in Solution
-      line(os, row);
+      // H >= 1: the surface temperatures TEMP1, TEMP2 [°C] replace the rigid slip pair.
+      const bool heat = d.h >= 1 && solution.temp1.size() == g.size();
+      const double last1 = heat ? solution.temp1[i] : wx, last2 = heat ? solution.temp2[i] : wy;
+      line(os, " " + fortran_g(x, 12, 4) + fortran_g(h_pen, 11, 3) + fortran_g(pn, 11, 3) +
+                   fortran_g(trcbnd, 11, 3) + fortran_g(pt_abs, 11, 3) + fortran_f(pt_arg, 10, 1) +
+                   "  " + fortran_g(s_abs, 11, 3) + fortran_g(last1, 11, 3) +
+                   fortran_g(last2, 11, 3));
     }
   }
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <ostream>
 #include <string>
@@ -64,9 +65,8 @@ void write_force_block(std::ostream& os, const CaseRecord& problem, const Soluti
   std::string values = "  " + sig(fn_over_g) + xvalue + yvalue +
                        fmt_sig(12, 6, 4, effective_approach(problem, solution)) + sig(t.pmax);
   if (d.h >= 1) {
-    // Surface temperatures are not part of the Solution yet: printed as 0 like other absent values.
     labels += "  MAX(T1,T2)";
-    values += sig(0.0);
+    values += sig(std::max(t.max_temp1, t.max_temp2));
   }
   line(os, labels);
   line(os, values);

@@ -132,7 +132,14 @@ void write_material_block(std::ostream& os, const CaseRecord& problem, const Sol
   line(os, "");
   line(os, "    POISS(1)    POISS(2)     GG(1)       GG(2)");
   line(os, "  " + g12(m.poiss1) + g12(m.poiss2) + g12(m.gg1) + g12(m.gg2));
-  // Not printed for lack of data in CaseRecord: damping (M2=2) and heat constants (H>=1).
+  // Not printed for lack of data in CaseRecord: damping (M2=2).
+  if (d.h >= 1) {
+    const HeatParameters& h = problem.heat;
+    line(os, "");
+    line(os, "     BKTEMP      HEATCP      LAMBDA      DENSITY");
+    line(os, "  " + g12(h.bktemp1) + g12(h.heatcp1) + g12(h.lambda1) + g12(h.dens1));
+    line(os, "  " + g12(h.bktemp2) + g12(h.heatcp2) + g12(h.lambda2) + g12(h.dens2));
+  }
   if (d.m == 1) {
     // The solver's effective constants (zero when the case was not solved).
     const CombinedMaterial& rv = solution.viscoelastic_effective;

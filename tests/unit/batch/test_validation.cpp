@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -42,6 +43,9 @@ TEST(ValidationTolerances, TableHasTheContractQuantities) {
   // Module-1 patches: validation.md §3's wheel/rail tolerances (0.5 % + 2e-4·FZ for forces,
   // 1 % PMAX, 5e-3 mm locations, 1e-4 rad angles, MN 0.5 % + 1e-3 mm·FZ); quantities without
   // one fall back to module 3.
+  // Surface temperature (H >= 1): 1 % of the maximum (validation.md §3).
+  ASSERT_NE(t.find("MAX(T1,T2)"), nullptr);
+  EXPECT_NEAR(allowed_difference(*t.find("MAX(T1,T2)"), 166.8, 1e5), 1.668, 1e-6);
   ASSERT_NE(t.find("patch 2/FN"), nullptr);
   EXPECT_NEAR(allowed_difference(*t.find("patch 2/FN"), 9997.0, 10000.0), 0.005 * 9997 + 2.0, 1e-6);
   EXPECT_NEAR(allowed_difference(*t.find("patch 1/PMAX"), 338.3, 10000.0), 3.383, 1e-6);
@@ -241,6 +245,26 @@ TEST(Validation, ViscoelasticCylindersEqualContact) {
   EXPECT_TRUE(r.run_error.empty()) << r.run_error;
   ASSERT_EQ(r.cases.size(), 6u);
   EXPECT_EQ(r.count(CaseStatus::Passed), 6) << format_case_details(r);
+}
+
+TEST(Validation, ErtzTemperatureMatchesTheReferenceTemperatures) {
+  // H=3 (c1-c3) and H=1 (c4), χ = π: the flash temperatures of physics.md §15 equal CONTACT's
+  // MAX(T1,T2) 166.8, 75.00, 241.8, 90.85 to the printed digits (the table allows 1 %).
+  REQUIRE_EXAMPLES();
+  const TemporaryFolder out;
+  const ExampleFiles files{"ertz_temperature", kExamples / "ertz_temperature.inp",
+                           kExamples / "ertz_temperature.ref_out"};
+  const auto r = validate_example(files, out.path(), ValidationOptions{});
+  EXPECT_TRUE(r.run_error.empty()) << r.run_error;
+  ASSERT_EQ(r.cases.size(), 4u);
+  const double printed_unit[] = {0.1, 0.01, 0.1, 0.01};
+  for (std::size_t c = 0; c < 4; ++c) {
+    EXPECT_EQ(r.cases[c].status, CaseStatus::Passed) << format_case_details(r);
+    const auto q = std::find_if(r.cases[c].quantities.begin(), r.cases[c].quantities.end(),
+                                [](const QuantityComparison& v) { return v.name == "MAX(T1,T2)"; });
+    ASSERT_NE(q, r.cases[c].quantities.end()) << "case " << c + 1;
+    EXPECT_LE(q->difference(), 0.5 * printed_unit[c] + 1e-9) << "case " << c + 1;
+  }
 }
 
 TEST(Validation, UnreadableInputMakesEveryCaseNotSupported) {

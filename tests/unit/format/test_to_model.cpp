@@ -140,7 +140,7 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r = basic_record();
   r.digits.t = 2;
   r.friction.law = 6;
-  EXPECT_EQ(message_of(r), "not supported yet: friction law L=6");
+  EXPECT_EQ(message_of(r), "not supported yet: friction law L=6 with T=2");
   r = basic_record();
   r.digits.t = 3;
   r.digits.m = 5;
@@ -150,7 +150,8 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
       "not supported yet: friction law L=4 with the simplified theory M=5 (not yet validated)");
   r = basic_record();
   r.digits.h = 3;
-  EXPECT_EQ(message_of(r), "not supported yet: temperature H=3");
+  r.digits.t = 2;
+  EXPECT_EQ(message_of(r), "not supported yet: temperature H=3 with T=2 (steady rolling only)");
   r = basic_record();
   r.digits.c = 9;
   EXPECT_EQ(message_of(r), "not supported yet: influence coefficients C=9");
@@ -158,6 +159,48 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r.potential.ipotcn = -6;
   EXPECT_EQ(message_of(r), "not supported yet: SDEC potential contact IPOTCN=-6");
   EXPECT_EQ(message_of(basic_record()), "(accepted)");
+}
+
+TEST(ToModel, HeatLinesBecomeTheThermalBodies) {
+  // H=3 lines BKTEMP HEATCP LAMBDA DENS per body (°C, J/(kg °C), W/(mm °C), kg/mm³); H=0 leaves
+  // the temperature calculation off whatever the record holds.
+  CaseRecord r = basic_record();
+  r.digits.t = 3;
+  r.heat = {0.0, 450.0, 50e-3, 7.85e-6, 150.0, 460.0, 40e-3, 7.8e-6, 0.5};
+  EXPECT_FALSE(to_patch_problem(r).heat.enabled);
+  r.digits.h = 1;
+  const model::SurfaceHeat h = to_patch_problem(r).heat;
+  EXPECT_TRUE(h.enabled);
+  EXPECT_DOUBLE_EQ(h.body1.bulk_temperature_C, 0.0);
+  EXPECT_DOUBLE_EQ(h.body1.heat_capacity_J_kgC, 450.0);
+  EXPECT_DOUBLE_EQ(h.body1.conductivity_W_mmC, 50e-3);
+  EXPECT_DOUBLE_EQ(h.body1.density_kg_mm3, 7.85e-6);
+  EXPECT_DOUBLE_EQ(h.body2.bulk_temperature_C, 150.0);
+  EXPECT_DOUBLE_EQ(h.body2.heat_capacity_J_kgC, 460.0);
+  EXPECT_DOUBLE_EQ(h.plastic_heat_fraction, 0.0);  // BETAPL only with the layer (M=4)
+  r.digits.m = 4;
+  EXPECT_DOUBLE_EQ(to_patch_problem(r).heat.plastic_heat_fraction, 0.5);
+}
+
+TEST(ToModel, TemperatureFrictionBecomesTheModelsLaw) {
+  // L=6 line FREF TREF DFHEAT DTHEAT (read into fkin = fstat = FREF and params) and memory.
+  CaseRecord r = basic_record();
+  r.digits.t = 3;
+  r.digits.h = 3;
+  r.friction.law = 6;
+  r.friction.fstat = r.friction.fkin = 0.35;
+  r.friction.params = {20.0, -0.1, 300.0, 0.0};
+  r.friction.memdst = 0.002;
+  r.friction.mem_s0 = 0.5;
+  const model::PatchProblem p = to_patch_problem(r);
+  EXPECT_TRUE(p.friction.temperature_dependent());
+  EXPECT_FALSE(p.friction.velocity_dependent());
+  EXPECT_DOUBLE_EQ(p.friction.static_coefficient, 0.35);
+  EXPECT_DOUBLE_EQ(p.friction.temperature.reference_temperature_C, 20.0);
+  EXPECT_DOUBLE_EQ(p.friction.temperature.change, -0.1);
+  EXPECT_DOUBLE_EQ(p.friction.temperature.temperature_span_C, 300.0);
+  EXPECT_DOUBLE_EQ(p.friction.memory_distance_mm, 0.002);
+  EXPECT_DOUBLE_EQ(p.friction.memory_floor_speed_mm_s, 0.5);
 }
 
 TEST(ToModel, FallingFrictionBecomesTheModelsLaw) {

@@ -107,5 +107,50 @@ TEST(ModelValidation, MessageShowsTheValue) {
   }
 }
 
+TEST(ModelValidation, HeatParametersArePhysical) {
+  // The temperature calculation needs conducting bodies (c_p, λ, ρ > 0), a finite bulk
+  // temperature, β_pl ∈ [0, 1] and steady rolling or no tangential problem (physics.md §15).
+  auto heated = [] {
+    PatchProblem p = valid_problem();
+    p.tangential.kind = TangentialKind::SteadyRolling;
+    p.heat.enabled = true;
+    return p;
+  };
+  EXPECT_EQ(rejected_field(heated()), "");
+  PatchProblem p = heated();
+  p.heat.body2.conductivity_W_mmC = 0.0;
+  EXPECT_EQ(rejected_field(p), "heat.body2.conductivity_W_mmC");
+  p = heated();
+  p.heat.body1.bulk_temperature_C = kNan;
+  EXPECT_EQ(rejected_field(p), "heat.body1.bulk_temperature_C");
+  p = heated();
+  p.heat.body1.density_kg_mm3 = -7.85e-6;
+  EXPECT_EQ(rejected_field(p), "heat.body1.density_kg_mm3");
+  p = heated();
+  p.heat.plastic_heat_fraction = 1.5;
+  EXPECT_EQ(rejected_field(p), "heat.plastic_heat_fraction");
+  p = heated();
+  p.tangential.kind = TangentialKind::Shift;
+  EXPECT_EQ(rejected_field(p), "heat.enabled");
+  p.heat.enabled = false;  // without the calculation its parameters are not looked at
+  p.heat.body1.heat_capacity_J_kgC = kInf;
+  EXPECT_EQ(rejected_field(p), "");
+}
+
+TEST(ModelValidation, TemperatureFrictionNeedsHeatAndTheExactTheory) {
+  PatchProblem p = valid_problem();
+  p.tangential.kind = TangentialKind::SteadyRolling;
+  p.friction.law = FrictionLawKind::TemperatureDependent;
+  p.friction.temperature = {20.0, -0.1, 300.0};
+  EXPECT_EQ(rejected_field(p), "friction.law");  // no temperature calculation
+  p.heat.enabled = true;
+  EXPECT_EQ(rejected_field(p), "");
+  p.friction.temperature.temperature_span_C = 0.0;
+  EXPECT_EQ(rejected_field(p), "friction.temperature.temperature_span_C");
+  p.friction.temperature.temperature_span_C = 300.0;
+  p.bodies.compliance = TangentialCompliance::FastsimThreeFlexibilities;
+  EXPECT_EQ(rejected_field(p), "friction.law");
+}
+
 }  // namespace
 }  // namespace rollcontact::model

@@ -82,3 +82,30 @@ TEST(FallingFriction, EachLawAtItsCharacteristicSpeeds) {
 
 }  // namespace
 }  // namespace rollcontact::physics
+
+namespace rollcontact::physics {
+namespace {
+
+TEST(FrictionLaw, TemperatureLawIsLinearBetweenTrefAndTrefPlusDtheat) {
+  // L = 6 (spec-additions B2): FREF up to TREF, FREF + DFHEAT from TREF + DTHEAT on, linear
+  // between.
+  model::Friction f;
+  f.law = model::FrictionLawKind::TemperatureDependent;
+  f.static_coefficient = f.kinetic_coefficient = 0.3;
+  f.temperature = {100.0, -0.2, 400.0};
+  const auto law = make_friction_law(f);
+  EXPECT_TRUE(law->temperature_dependent());
+  EXPECT_FALSE(law->velocity_dependent());
+  EXPECT_DOUBLE_EQ(law->coefficient(), 0.3);  // static value: scales FX/FSTAT/FN
+  EXPECT_DOUBLE_EQ(law->traction_bound(1000.0), 300.0);
+  EXPECT_DOUBLE_EQ(law->coefficient_at_temperature(-50.0), 0.3);
+  EXPECT_DOUBLE_EQ(law->coefficient_at_temperature(100.0), 0.3);
+  EXPECT_DOUBLE_EQ(law->coefficient_at_temperature(200.0), 0.25);
+  EXPECT_DOUBLE_EQ(law->coefficient_at_temperature(500.0), 0.1);
+  EXPECT_DOUBLE_EQ(law->coefficient_at_temperature(900.0), 0.1);
+  // Other laws do not depend on the temperature.
+  EXPECT_DOUBLE_EQ(CoulombLaw(0.4).coefficient_at_temperature(900.0), 0.4);
+}
+
+}  // namespace
+}  // namespace rollcontact::physics
