@@ -1,5 +1,5 @@
 // Query cost of creep-force lookup tables (include/rollcontact/creep_lookup.hpp): one evaluation
-// at a pseudo-random point of a table with the default grid (106,875 nodes, 2.6 MB of values),
+// at a pseudo-random point of a table with the default grid (223,125 nodes, 5.4 MB of values),
 // through the C++ API and through the C interface of librollcontact_cntc.so — what an MBS code
 // pays per wheel and time step. Goal: under a microsecond.
 

@@ -105,7 +105,7 @@ CommandRunner add_lookup_command(CLI::App& app, batch::Distribution& distributio
       ->check(CLI::IsMember({"exact", "fastsim1", "fastsim3", "fastrip"}))
       ->capture_default_str();
   cmd->add_option("--grid", o->grid,
-                  "default: 106,875 nodes (a/b 0.2-5, normalised creepages to 1, spin to 3); "
+                  "default: 223,125 nodes (a/b 0.2-5, normalised creepages to 1, spin to 3); "
                   "coarse: 441 nodes for quick checks")
       ->check(CLI::IsMember({"default", "coarse"}))
       ->capture_default_str();

@@ -41,7 +41,8 @@ NodeIndex node_of(const CreepLookupAxes& ax, std::size_t flat) {
 
 CreepLookupAxes default_lookup_axes() {
   CreepLookupAxes ax;
-  ax.a_over_b = {0.2, 0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0};
+  ax.a_over_b = {0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.7, 0.85, 1.0,
+                 1.2, 1.4, 1.7, 2.0, 2.5, 3.0, 4.0, 5.0};
   // Creep forces saturate near ξ̃ = 3/C11 ≈ 0.7 (Johnson's approximation) and bend most near
   // zero; spin saturates more slowly.
   const std::vector<double> half{0.01, 0.025, 0.05, 0.08, 0.12, 0.17,
@@ -51,7 +52,7 @@ CreepLookupAxes default_lookup_axes() {
   creep.push_back(0.0);
   creep.insert(creep.end(), half.begin(), half.end());
   ax.ksi = ax.eta = creep;
-  const std::vector<double> spin{0.05, 0.12, 0.25, 0.4, 0.6, 0.9, 1.3, 2.0, 3.0};
+  const std::vector<double> spin{0.03, 0.08, 0.15, 0.25, 0.4, 0.6, 0.9, 1.3, 2.0, 3.0};
   for (auto it = spin.rbegin(); it != spin.rend(); ++it) ax.phi.push_back(-*it);
   ax.phi.push_back(0.0);
   ax.phi.insert(ax.phi.end(), spin.begin(), spin.end());

@@ -13,9 +13,10 @@
 
 namespace rollcontact::batch {
 
-/// The default grid: 9 semi-axis ratios 0.2 … 5, ξ̃ and η̃ in 25 values each over [−1, 1]
-/// (denser near zero, where the creep curves bend; beyond, full sliding), φ̃ in 19 values over
-/// [−3, 3]: 106,875 nodes.
+/// The default grid: 17 semi-axis ratios 0.2 … 5, ξ̃ and η̃ in 25 values each over [−1, 1]
+/// (denser near zero, where the creep curves bend; beyond, full sliding), φ̃ in 21 values over
+/// [−3, 3]: 223,125 nodes (measured at 500 held-back points with the exact theory, mx 11:
+/// interpolation error of the force 0.97 % of μFN rms, 4.5 % at most).
 CreepLookupAxes default_lookup_axes();
 
 /// A coarse grid for quick checks and tests: a/b 0.5, 1, 2; ξ̃, η̃ in 7 values over [−1, 1];
