@@ -42,7 +42,7 @@ NodeIndex node_of(const CreepLookupAxes& ax, std::size_t flat) {
 CreepLookupAxes default_lookup_axes() {
   CreepLookupAxes ax;
   ax.a_over_b = {0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.7, 0.85, 1.0,
-                 1.2, 1.4, 1.7, 2.0, 2.5, 3.0, 4.0, 5.0};
+                 1.2, 1.4,  1.7, 2.0, 2.5, 3.0, 4.0, 5.0};
   // Creep forces saturate near ξ̃ = 3/C11 ≈ 0.7 (Johnson's approximation) and bend most near
   // zero; spin saturates more slowly.
   const std::vector<double> half{0.01, 0.025, 0.05, 0.08, 0.12, 0.17,
