@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import rollcontact as rc
-from conftest import REPO_EXAMPLES
+from conftest import EXAMPLES, REPO_EXAMPLES
 
 
 def test_creep_curve_from_python_equals_the_cli(cli, tmp_path):
@@ -67,3 +67,22 @@ def test_bad_input_raises_with_file_and_line(tmp_path):
     bad.write_text("version = 1\n[[case]]\n[case.normal]\nforce_N = -5.0\n")
     with pytest.raises(ValueError, match="bad.toml"):
         rc.run(bad, tmp_path)
+
+
+def test_fields_of_the_extended_physics(tmp_path):
+    """Temperatures (H >= 1) and the local friction coefficient (falling friction) come back
+    as fields next to the tractions, with CONTACT's maximum temperature."""
+    if not (EXAMPLES / "ertz_temperature.inp").exists():
+        pytest.skip("CONTACT's examples not found")
+    examples = EXAMPLES
+    heat = rc.run(str(examples / "ertz_temperature.inp"), output_dir=str(tmp_path))
+    c1 = heat[0]
+    assert c1["temp1"].shape == c1["pn"].shape
+    assert abs(c1["max_temp1"] - 166.8) < 0.1  # CONTACT's MAX(T1,T2) of case 1
+    assert np.nanmax(c1["temp1"]) >= c1["max_temp1"] - 1e-9
+    veldep = rc.run(str(examples / "veldep_fric.inp"), output_dir=str(tmp_path))
+    mu = veldep[0]["mu"]
+    assert mu.shape == veldep[0]["pn"].shape
+    inside = veldep[0]["pn"] > 0
+    assert np.all(mu[inside] <= 0.30 + 1e-12) and np.all(mu[inside] >= 0.18 - 1e-12)
+    assert "temp1" not in veldep[0]

@@ -120,6 +120,20 @@ py::dict solution_to_dict(Solution solution) {
                              {"un", &s.un},
                              {"h", &s.h}})
     d[name] = field_view(g, *field, owner);
+  // Fields that only some physics has (present as arrays when the solver made them): the local
+  // friction coefficient (velocity- and temperature-dependent laws), the interfacial layer's
+  // yield limit and plastic displacement (M=4 with plasticity), surface temperatures (H >= 1).
+  for (auto [name, field] : {std::pair{"mu", &s.mu},
+                             {"yield_limit", &s.yield_limit},
+                             {"plastic_x", &s.plastic_x},
+                             {"plastic_y", &s.plastic_y},
+                             {"temp1", &s.temp1},
+                             {"temp2", &s.temp2}})
+    if (field->size() == g.size()) d[name] = field_view(g, *field, owner);
+  if (!s.temp1.empty()) {
+    d["max_temp1"] = t.max_temp1;
+    d["max_temp2"] = t.max_temp2;
+  }
   py::array_t<std::int8_t> state({static_cast<py::ssize_t>(g.my), static_cast<py::ssize_t>(g.mx)});
   auto sv = state.mutable_unchecked<2>();
   for (int iy = 0; iy < g.my; ++iy)
