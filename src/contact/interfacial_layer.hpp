@@ -20,7 +20,15 @@ using Field = std::vector<double>;
 struct PlasticHistory {
   Field x, y;         ///< plastic displacement [mm]
   Field accumulated;  ///< u*_pl [mm]
+  /// Steady rolling: no previous time; a particle accumulates the flow of the elements it has
+  /// passed, from the leading edge of its row (χ = 0: high ix) up to and including its own.
+  const Grid* steady_grid = nullptr;
+  double chi_rad = 0.0;
 };
+
+/// Steady rolling: per element the sum of `per_step` over the row from the leading edge up to
+/// and including the element (what a particle has accumulated when it reaches it).
+Field accumulate_along_rows(const Grid& grid, double chi_rad, const Field& per_step);
 
 /// τ_c per element for a plastic increment of length `increment_mm` in this case (≥ 0; a
 /// softening layer does not go below zero strength).

@@ -811,8 +811,18 @@ void CaseSolver::run() {
   prev_ = map_previous(prev, grid_);
   layer_plastic_ = problem_.bodies.has_layer && problem_.bodies.layer.plastic() && !simplified_;
   if (layer_plastic_) {
-    plastic_history_ = prev_.plastic;
-    if (plastic_history_.accumulated.empty()) plastic_history_.accumulated.assign(n, 0.0);
+    if (kind == model::TangentialKind::TransientRolling &&
+        problem_.bodies.layer.hardening_N_mm3 != 0.0)
+      throw NotSupportedError(
+          "a hardening or softening interfacial layer (K_TAU != 0) in transient rolling");
+    if (kind == model::TangentialKind::SteadyRolling) {
+      plastic_history_ = {};
+      plastic_history_.steady_grid = &grid_;
+      plastic_history_.chi_rad = sol_.kinematics.chi;
+    } else {
+      plastic_history_ = prev_.plastic;
+      if (plastic_history_.accumulated.empty()) plastic_history_.accumulated.assign(n, 0.0);
+    }
   }
   if (tangential && !simplified_) {
     const auto& k = sol_.kinematics;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "rollcontact/solve.hpp"
 #include "support/hertz_problem.hpp"
 
@@ -112,6 +114,51 @@ TEST(InterfacialLayer, WithoutComplianceOrYieldLimitItIsNoLayer) {
   EXPECT_EQ(layered.totals.fy, bare.totals.fy);
   EXPECT_EQ(layered.px, bare.px);
   EXPECT_EQ(layered.statistics.nplast, 0);
+}
+
+}  // namespace
+}  // namespace rollcontact
+
+namespace rollcontact {
+namespace {
+
+TEST(InterfacialLayer, SteadyRollingHardensAlongTheRows) {
+  // Steady rolling through a hardening layer: a particle accumulates the flow of every element
+  // it has passed, so in the plastic elements |p_t| = τ_c0 + k_τ·u*, with u* growing from the
+  // leading edge (χ = 0: high ix) towards the trailing edge; softening (k_τ < 0) lowers FX.
+  model::PatchProblem p = test::hertz_problem(0.6, 1.0, 1000.0, 82000.0, 0.28, 24, 30, 1.1);
+  p.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.rolling.velocity_mm_per_s = 1000.0;
+  p.rolling.step_mm = 2.0 * 1.1 * 0.6 / 24;
+  p.tangential.creepage.longitudinal = 5e-3;
+  p.friction = {0.7, 0.7};
+  p.bodies.has_layer = true;
+  p.bodies.layer = {kG3, kThickness, 30.0, 2000.0};
+  PatchSolver s;
+  const Solution sol = s.solve(p);
+  ASSERT_TRUE(sol.solver.converged) << sol.solver.message;
+  ASSERT_GT(sol.statistics.nplast, 0);
+  const Grid& g = sol.grid;
+  for (int iy = 0; iy < g.my; ++iy) {
+    double previous = 0.0;
+    for (int ix = g.mx - 1; ix >= 0; --ix) {  // from the leading edge
+      const std::size_t i = g.index(ix, iy);
+      EXPECT_GE(sol.plastic_accumulated[i], previous - 1e-15);
+      previous = sol.plastic_accumulated[i];
+      if (sol.state[i] != ElementState::Plastic) continue;
+      EXPECT_NEAR(std::hypot(sol.px[i], sol.py[i]), 30.0 + 2000.0 * sol.plastic_accumulated[i],
+                  1e-6 * 30.0);
+    }
+  }
+  p.bodies.layer.hardening_N_mm3 = 0.0;
+  PatchSolver s0;
+  const Solution perfect = s0.solve(p);
+  p.bodies.layer.hardening_N_mm3 = -500.0;
+  PatchSolver s1;
+  const Solution soft = s1.solve(p);
+  ASSERT_TRUE(perfect.solver.converged && soft.solver.converged);
+  EXPECT_GT(std::abs(sol.totals.fx), std::abs(perfect.totals.fx));
+  EXPECT_LT(std::abs(soft.totals.fx), std::abs(perfect.totals.fx));
 }
 
 }  // namespace
