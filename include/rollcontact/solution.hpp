@@ -35,6 +35,9 @@ struct CombinedMaterial {
   /// Tangential compliance of an interfacial layer h/G₃ [mm³/N] (M=4), added to the diagonal
   /// of the tangential influence coefficients; 0 without a layer.
   double layer_compliance = 0.0;
+  /// Normal compliance of a compressible interfacial layer FLXZ [mm³/N] (B=1), added to the
+  /// diagonal of C_nn; 0 without one.
+  double normal_layer_compliance = 0.0;
   /// Viscoelastic bodies (M=1): the delayed parts added to every coefficient (g, nu, k above are
   /// then the glassy constants); empty (weight 0) for elastic bodies.
   std::array<ViscousCompliance, 2> viscous{};

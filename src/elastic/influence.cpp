@@ -134,15 +134,17 @@ namespace {
 /// h/G₃ at the offset whose (shifted) observation point lies in the source element.
 void add_layer_compliance(Component c, const Grid& grid, const CombinedMaterial& material,
                           double shift_x, double shift_y, Kernel& kernel) {
-  if (material.layer_compliance == 0.0 || (c != Component::xx && c != Component::yy)) return;
+  const double compliance = c == Component::nn ? material.normal_layer_compliance
+                            : c == Component::xx || c == Component::yy ? material.layer_compliance
+                                                                       : 0.0;
+  if (compliance == 0.0) return;
   // dix·dx + shift_x ∈ [−dx/2, dx/2): half-open, so that a point on an element edge belongs to
   // one element (a rolling step of exactly one element lands on the neighbour's centre).
   const auto offset = [](double shift, double d) {
     return static_cast<int>(std::ceil(-0.5 - shift / d - 1e-9));
   };
   const int dix = offset(shift_x, grid.dx), diy = offset(shift_y, grid.dy);
-  if (std::abs(dix) < grid.mx && std::abs(diy) < grid.my)
-    kernel.at(dix, diy) += material.layer_compliance;
+  if (std::abs(dix) < grid.mx && std::abs(diy) < grid.my) kernel.at(dix, diy) += compliance;
 }
 
 /// The corner sums of component c on the grid, divided by G; `log_floor` [mm]: log terms whose

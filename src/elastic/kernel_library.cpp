@@ -35,7 +35,8 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
   for (auto it = entries_.begin(); it != entries_.end(); ++it) {
     const Entry& e = *it;
     if (e.c != c || e.dx != grid.dx || e.dy != grid.dy || e.g != m.g || e.nu != m.nu ||
-        e.k != m.k || e.layer != m.layer_compliance || e.shift_x != shift_x ||
+        e.k != m.k || e.layer != m.layer_compliance ||
+        e.normal_layer != m.normal_layer_compliance || e.shift_x != shift_x ||
         e.shift_y != shift_y || e.viscous != m.viscous)
       continue;
     if (e.kernel.mx() >= grid.mx && e.kernel.my() >= grid.my) {
@@ -54,8 +55,9 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
   ++computed_;
   if (4 * bytes_for(big.mx, big.my) > budget_bytes_)
     return make_kernel(c, grid, m, shift_x, shift_y);
-  entries_.push_front({c, grid.dx, grid.dy, m.g, m.nu, m.k, m.layer_compliance, shift_x, shift_y,
-                       m.viscous, make_kernel(c, big, m, shift_x, shift_y)});
+  entries_.push_front({c, grid.dx, grid.dy, m.g, m.nu, m.k, m.layer_compliance,
+                       m.normal_layer_compliance, shift_x, shift_y, m.viscous,
+                       make_kernel(c, big, m, shift_x, shift_y)});
   kept_bytes_ += bytes_of(entries_.front().kernel);
   while (kept_bytes_ > budget_bytes_) {
     kept_bytes_ -= bytes_of(entries_.back().kernel);

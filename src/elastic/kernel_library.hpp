@@ -31,7 +31,7 @@ class KernelLibrary {
  private:
   struct Entry {
     Component c;
-    double dx, dy, g, nu, k, layer, shift_x, shift_y;
+    double dx, dy, g, nu, k, layer, normal_layer, shift_x, shift_y;
     std::array<ViscousCompliance, 2> viscous;
     Kernel kernel;
   };

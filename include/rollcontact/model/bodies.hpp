@@ -77,6 +77,9 @@ struct Bodies {
   SimplifiedParameters simplified;
   bool has_layer = false;  ///< CONTACT M=4: the interfacial layer below applies
   InterfacialLayer layer;
+  /// A compressible interfacial layer (CONTACT B=1, e.g. pressure-sensitive film): its normal
+  /// compliance FLXZ [mm³/N] adds u_n = FLXZ·p_n; 0: none.
+  double normal_layer_flexibility_mm3_N = 0.0;
   /// CONTACT M=1: both bodies are standard linear solids (steady rolling only, χ = 0).
   bool viscoelastic = false;
   ViscoelasticBody viscous1, viscous2;

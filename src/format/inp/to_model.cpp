@@ -144,7 +144,7 @@ model::Friction to_model_friction(int law, const FrictionValues& f, double memds
 
 void check_supported(const CaseRecord& record) {
   const ControlDigits& d = record.digits;
-  if (d.b == 1 || d.b == 4) not_supported(fmt::format("normal method B={}", d.b));
+  if (d.b == 4) not_supported(fmt::format("normal method B={}", d.b));
   if (d.m != 0 && d.m != 1 && d.m != 2 && d.m != 3 && d.m != 4 && d.m != 5)
     not_supported(fmt::format("material model M={}", d.m));
   if (d.m == 1 && d.t != 3)
@@ -180,6 +180,7 @@ model::PatchProblem to_patch_problem(const CaseRecord& record) {
   p.potential = record.potential;
   p.gap = record.geometry;
   p.bodies = bodies_of(record);
+  if (d.b == 1) p.bodies.normal_layer_flexibility_mm3_N = record.materials.flxz;
   const Friction& f = record.friction;
   p.friction = to_model_friction(f.law, {f.fstat, f.fkin, f.params}, f.memdst, f.mem_s0);
   p.normal = normal_of(record);

@@ -163,3 +163,33 @@ TEST(InterfacialLayer, SteadyRollingHardensAlongTheRows) {
 
 }  // namespace
 }  // namespace rollcontact
+
+namespace rollcontact {
+namespace {
+
+TEST(CompressibleLayer, AddsItsNormalComplianceInSeries) {
+  // B=1: u_n += FLXZ·p_n. Under a prescribed force the approach grows by FLXZ·p_n on a single
+  // element, and on a Hertzian grid a softer interface spreads the pressure (lower PMAX, larger
+  // area) at the same force.
+  const double flxz = 2e-5;  // mm³/N
+  PatchSolver a, b;
+  model::PatchProblem p = test::hertz_problem(0.5, 0.5, 900.0, 82000.0, 0.28, 1, 1, 1.0);
+  const Solution bare = a.solve(p);
+  p.bodies.normal_layer_flexibility_mm3_N = flxz;
+  const Solution soft = b.solve(p);
+  ASSERT_TRUE(bare.solver.converged && soft.solver.converged);
+  const double pn = 900.0 / bare.grid.element_area();
+  EXPECT_NEAR(soft.totals.pen - bare.totals.pen, flxz * pn, 1e-12);
+  model::PatchProblem h = test::hertz_problem(3.0, 2.0, 10000.0, 82000.0, 0.28, 31, 31, 1.3);
+  PatchSolver c, d;
+  const Solution hertz = c.solve(h);
+  h.bodies.normal_layer_flexibility_mm3_N = flxz;
+  const Solution layered = d.solve(h);
+  ASSERT_TRUE(hertz.solver.converged && layered.solver.converged);
+  EXPECT_NEAR(layered.totals.fn, hertz.totals.fn, 1e-6 * hertz.totals.fn);
+  EXPECT_LT(layered.totals.pmax, 0.99 * hertz.totals.pmax);
+  EXPECT_GT(layered.statistics.ncon, hertz.statistics.ncon);
+}
+
+}  // namespace
+}  // namespace rollcontact
