@@ -32,9 +32,12 @@ struct ProfileSmoothing {
 };
 
 /// A rail or wheel profile in canonical form (Profile: mm, z down, y to the field side).
+/// A profile that varies (spec/physics.md §13.9): for a wheel, slices around its circumference
+/// (`.slcw`, θ [rad]); each slice is smoothed like `points`. Empty: a plain profile.
 struct WheelRailProfile {
   Profile points;
   ProfileSmoothing smoothing;
+  SlicedProfile slices;  ///< wheel only; `points` then holds the first slice
 };
 
 /// Contact search and patch grids (the D=2 line).
