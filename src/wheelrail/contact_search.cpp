@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "wheelrail/sliced_locus.hpp"
+
 namespace rollcontact::wheelrail {
 
 namespace {
@@ -34,7 +36,13 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
     double x = (r * w.dz_dy * R.r[0][1] - r_nom * R.r[0][2]) / R.r[0][0];
     x = std::clamp(x, -0.5 * r_nom, 0.5 * r_nom);
     const Vec3 q{x, y_off + yp, std::sqrt(std::max(r * r - x * x, 0.0))};
-    const Vec3 pt = pose.centre + R * q;
+    Vec3 pt = pose.centre + R * q;
+    if (prof.wheel_surface() != nullptr) {
+      // Out of round: search the circumference from the round wheel's locus angle.
+      const LocusPoint lp = sliced_locus_point(prof, pose, yp, std::atan2(q.x, q.z));
+      if (!lp.found) continue;
+      pt = lp.point;
+    }
     if (have_prev && pt.y != prev.y) {
       const Vec3 a = pt.y < prev.y ? pt : prev, b = pt.y < prev.y ? prev : pt;
       const double j_lo = std::ceil((a.y - g.y0_mm) / g.dy_mm);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "rollcontact/errors.hpp"
 
@@ -72,6 +73,48 @@ void set_attenuated_parts(const PlacedProfiles& prof, const ContactRegion& regio
       gap.patch_factors.push_back(region.part_factors[a * n + b]);
 }
 
+/// Element centres at multiples of (DX, DS) covering [x_lo, x_hi] × [s_lo, s_hi] (relative to
+/// the reference point) plus a guard element per side; sets s.ix0, s.iy0, s.dx_mm, s.ds_mm and
+/// returns (mx, my). DX, DS are doubled while the grid has NPOT_MAX elements or more.
+std::pair<int, int> size_grid(const model::WheelRailProblem& p, double x_lo, double x_hi,
+                              double s_lo, double s_hi, PatchSetup& s,
+                              std::vector<std::string>& warnings) {
+  s.dx_mm = p.search.dx_mm;
+  s.ds_mm = p.search.ds_mm;
+  int mx = 0, my = 0;
+  for (int doubling = 0;; ++doubling) {
+    s.ix0 = static_cast<int>(std::floor(x_lo / s.dx_mm)) - 1;
+    s.iy0 = static_cast<int>(std::floor(std::min(s_lo, s_hi) / s.ds_mm)) - 1;
+    mx = static_cast<int>(std::ceil(x_hi / s.dx_mm)) + 1 - s.ix0 + 1;
+    my = static_cast<int>(std::ceil(std::max(s_lo, s_hi) / s.ds_mm)) + 1 - s.iy0 + 1;
+    // Grid sizes rounded up to multiples of 8 (extra elements split over both ends): the
+    // influence kernels and FFT plans depend on the size only, so the force iteration and
+    // neighbouring cases reuse them instead of recomputing (measured: most of the solve time).
+    const int pad_x = (8 - mx % 8) % 8, pad_y = (8 - my % 8) % 8;
+    s.ix0 -= pad_x / 2;
+    s.iy0 -= pad_y / 2;
+    mx += pad_x;
+    my += pad_y;
+    if (static_cast<long>(mx) * my < p.search.max_elements || doubling > 20) break;
+    s.dx_mm *= 2.0;
+    s.ds_mm *= 2.0;
+    warnings.push_back(fmt::format(
+        "the patch grid would have {} elements, more than NPOT_MAX = {}: DX, DS doubled to "
+        "{:g}, {:g} mm",
+        static_cast<long>(mx) * my, p.search.max_elements, s.dx_mm, s.ds_mm));
+  }
+  return {mx, my};
+}
+
+/// True when the undeformed surfaces interpenetrate (h < PEN) in the first or last column.
+bool interpenetrates_at_x_ends(const std::vector<double>& h, int mx, int my, double pen) {
+  for (int j = 0; j < my; ++j) {
+    const std::size_t row = static_cast<std::size_t>(j) * static_cast<std::size_t>(mx);
+    if (h[row] < pen || h[row + static_cast<std::size_t>(mx) - 1] < pen) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 ContactFrame contact_frame(const ContactRegion& region) {
@@ -128,43 +171,29 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
   const double s_ref = prof.rail().at_y(region.reference.y - y_r).s;
   const double s_lo = prof.rail().at_y(region.y_min - y_r).s - s_ref;
   const double s_hi = prof.rail().at_y(region.y_max - y_r).s - s_ref;
-  const double x_lo = region.x_min - region.reference.x, x_hi = region.x_max - region.reference.x;
-  s.dx_mm = p.search.dx_mm;
-  s.ds_mm = p.search.ds_mm;
-  int mx = 0, my = 0;
-  for (int doubling = 0;; ++doubling) {
-    s.ix0 = static_cast<int>(std::floor(x_lo / s.dx_mm)) - 1;
-    s.iy0 = static_cast<int>(std::floor(std::min(s_lo, s_hi) / s.ds_mm)) - 1;
-    mx = static_cast<int>(std::ceil(x_hi / s.dx_mm)) + 1 - s.ix0 + 1;
-    my = static_cast<int>(std::ceil(std::max(s_lo, s_hi) / s.ds_mm)) + 1 - s.iy0 + 1;
-    // Grid sizes rounded up to multiples of 8 (extra elements split over both ends): the
-    // influence kernels and FFT plans depend on the size only, so the force iteration and
-    // neighbouring cases reuse them instead of recomputing (measured: most of the solve time).
-    const int pad_x = (8 - mx % 8) % 8, pad_y = (8 - my % 8) % 8;
-    s.ix0 -= pad_x / 2;
-    s.iy0 -= pad_y / 2;
-    mx += pad_x;
-    my += pad_y;
-    if (static_cast<long>(mx) * my < p.search.max_elements || doubling > 20) break;
-    s.dx_mm *= 2.0;
-    s.ds_mm *= 2.0;
-    warnings.push_back(fmt::format(
-        "the patch grid would have {} elements, more than NPOT_MAX = {}: DX, DS doubled to "
-        "{:g}, {:g} mm",
-        static_cast<long>(mx) * my, p.search.max_elements, s.dx_mm, s.ds_mm));
-  }
-
+  double x_lo = region.x_min - region.reference.x, x_hi = region.x_max - region.reference.x;
   model::PatchProblem& q = s.problem;
-  q = p.patch;
-  q.potential = {};
-  q.potential.ipotcn = 1;
-  q.potential.mx = mx;
-  q.potential.my = my;
-  q.potential.values = {(s.ix0 - 0.5) * s.dx_mm, (s.iy0 - 0.5) * s.ds_mm, s.dx_mm, s.ds_mm};
-  q.gap = {};
-  q.gap.ibase = 9;
-  q.gap.iplan = 1;
-  q.gap.values = undeformed_distance(prof, pose, s.frame, s, mx, my, s.pen_mm);
+  for (int widening = 0;; ++widening) {
+    const auto [mx, my] = size_grid(p, x_lo, x_hi, s_lo, s_hi, s, warnings);
+    q = p.patch;
+    q.potential = {};
+    q.potential.ipotcn = 1;
+    q.potential.mx = mx;
+    q.potential.my = my;
+    q.potential.values = {(s.ix0 - 0.5) * s.dx_mm, (s.iy0 - 0.5) * s.ds_mm, s.dx_mm, s.ds_mm};
+    q.gap = {};
+    q.gap.ibase = 9;
+    q.gap.iplan = 1;
+    q.gap.values = undeformed_distance(prof, pose, s.frame, s, mx, my, s.pen_mm);
+    // The region's length comes from the round wheel's curvature; a sliced wheel can be flatter
+    // along x (a worn flat) and interpenetrate up to the grid's ends: lengthen it then.
+    if (prof.wheel_surface() == nullptr || widening == 4 ||
+        !interpenetrates_at_x_ends(q.gap.values, mx, my, s.pen_mm))
+      break;
+    const double grow = 0.25 * (x_hi - x_lo);
+    x_lo -= grow;
+    x_hi += grow;
+  }
   set_attenuated_parts(prof, region, s.frame, q.gap);
   q.normal.kind = model::NormalLoadKind::Approach;
   q.normal.approach_mm = s.pen_mm;

@@ -11,12 +11,22 @@ double rail_roll_of(const model::WheelRailProblem& p) {
   return -p.track.cant_rad + p.rail_state.droll_rad;
 }
 
+bool same_slices(const SlicedProfile& a, const SlicedProfile& b) {
+  if (a.u != b.u || a.u_intpol != b.u_intpol || a.nfeat != b.nfeat ||
+      a.slices.size() != b.slices.size())
+    return false;
+  for (std::size_t i = 0; i < a.slices.size(); ++i)
+    if (a.slices[i].y != b.slices[i].y || a.slices[i].z != b.slices[i].z) return false;
+  return true;
+}
+
 bool same_profile(const model::WheelRailProfile& a, const model::WheelRailProfile& b) {
   const model::ProfileSmoothing &s = a.smoothing, &t = b.smoothing;
-  return a.points.y == b.points.y && a.points.z == b.points.z && s.method == t.method &&
-         s.smooth == t.smooth && s.zigzag_threshold_rad == t.zigzag_threshold_rad &&
-         s.kink_high_rad == t.kink_high_rad && s.kink_low_rad == t.kink_low_rad &&
-         s.kink_window_mm == t.kink_window_mm && s.max_omitted_fraction == t.max_omitted_fraction;
+  return a.points.y == b.points.y && a.points.z == b.points.z && same_slices(a.slices, b.slices) &&
+         s.method == t.method && s.smooth == t.smooth &&
+         s.zigzag_threshold_rad == t.zigzag_threshold_rad && s.kink_high_rad == t.kink_high_rad &&
+         s.kink_low_rad == t.kink_low_rad && s.kink_window_mm == t.kink_window_mm &&
+         s.max_omitted_fraction == t.max_omitted_fraction;
 }
 
 /// The gauge point (physics.md §13.2): on the canted profile, among the points on the track side
@@ -48,6 +58,21 @@ double find_gauge_point(const ProfileCurve& rail, double gaught, double& top_z) 
   return y_min;
 }
 
+std::shared_ptr<const SlicedWheelSurface> surface_of(const model::WheelRailProfile& wheel) {
+  if (wheel.slices.u.empty()) return nullptr;
+  return std::make_shared<const SlicedWheelSurface>(wheel.slices, wheel.smoothing);
+}
+
+/// The cross-section of a sliced wheel at material angle θ as a curve: the surface is already
+/// smooth, so the curve interpolates its points (no second smoothing).
+ProfileCurve cross_section_curve(const SlicedWheelSurface& surface,
+                                 const model::ProfileSmoothing& smoothing, double theta_rad) {
+  model::ProfileSmoothing interpolate = smoothing;
+  interpolate.smooth = 0.0;
+  return ProfileCurve(model::WheelRailProfile{surface.cross_section(theta_rad), interpolate, {}},
+                      false);
+}
+
 }  // namespace
 
 PlacedProfiles::PlacedProfiles(const model::WheelRailProblem& p)
@@ -57,7 +82,13 @@ PlacedProfiles::PlacedProfiles(const model::WheelRailProblem& p)
       gauge_height_(p.track.gauge_height_mm),
       ytape_(p.wheelset.tape_circle_y_mm),
       rail_(p.rail, true, rail_roll_of(p), 0.0, 0.0),
-      wheel_(p.wheel, false) {
+      wheel_(p.wheel, false),
+      wheel_surface_(surface_of(p.wheel)) {
+  if (wheel_surface_) {
+    // The tape circle of a sliced wheel is taken at θ = 0 (a fixed r0 for every rotation).
+    wheel_ = cross_section_curve(*wheel_surface_, p.wheel.smoothing, 0.0);
+    wheel_theta_ = 0.0;
+  }
   if (gauge_height_ > 0.0) {
     gauge_y_ = find_gauge_point(rail_, gauge_height_, rail_top_z_);
   } else {
@@ -88,6 +119,10 @@ void PlacedProfiles::place(const model::WheelRailProblem& p) {
   const model::WheelsetGeometry& w = p.wheelset;
   wheel_y_offset_ = 0.5 * w.flange_back_distance_mm - w.flange_back_position_mm;
   wheel_r0_ = w.nominal_radius_mm - z_tape_;
+  if (wheel_surface_ && -p.motion.pitch_rad != wheel_theta_) {
+    wheel_theta_ = -p.motion.pitch_rad;
+    wheel_ = cross_section_curve(*wheel_surface_, wheel_profile_.smoothing, wheel_theta_);
+  }
 }
 
 CurvePoint PlacedProfiles::rail_at_track_y(double y) const {

@@ -5,10 +5,12 @@
 // the expensive part; it is done once per profile pair and rail roll and reused while they stay
 // the same (same_curves()).
 
+#include <memory>
 #include <optional>
 
 #include "rollcontact/model/wheelrail.hpp"
 #include "wheelrail/profile_curve.hpp"
+#include "wheelrail/wheel_surface.hpp"
 
 namespace rollcontact::wheelrail {
 
@@ -24,7 +26,14 @@ class PlacedProfiles {
 
   /// The rail profile rotated by its roll, origin not shifted; track y = rail_y + curve y.
   const ProfileCurve& rail() const noexcept { return rail_; }
+  /// The wheel profile; for a sliced wheel its cross-section at the contact (material angle
+  /// wheel_theta_rad(), remade by place() when the pitch changes).
   const ProfileCurve& wheel() const noexcept { return wheel_; }
+  /// The wheel surface of a sliced wheel (physics.md §13.9); nullptr for a plain profile.
+  const SlicedWheelSurface* wheel_surface() const noexcept { return wheel_surface_.get(); }
+  /// Material angle θ of the wheel point straight below the axle: −PITCH_WS [rad]. A point at
+  /// angle φ = atan2(x, z) from the axle (wheelset frame) is the material angle θ + φ.
+  double wheel_theta_rad() const noexcept { return wheel_theta_; }
   double rail_y_mm() const noexcept { return rail_y_; }
   double rail_z_mm() const noexcept { return rail_z_; }
   double rail_roll_rad() const noexcept { return rail_roll_; }
@@ -42,6 +51,8 @@ class PlacedProfiles {
   model::WheelRailProfile rail_profile_, wheel_profile_;
   double rail_roll_ = 0.0, gauge_height_ = 0.0, ytape_ = 0.0;
   ProfileCurve rail_, wheel_;
+  std::shared_ptr<const SlicedWheelSurface> wheel_surface_;
+  double wheel_theta_ = 0.0;
   std::optional<double> gauge_y_;
   double rail_top_z_ = 0.0;
   double z_tape_ = 0.0;

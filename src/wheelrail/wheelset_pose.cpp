@@ -4,6 +4,34 @@
 
 namespace rollcontact::wheelrail {
 
+namespace {
+
+/// The line q(t) = q0 + t·dq (wheelset frame) meets a sliced wheel: f(t) = ρ − (r0 + z(θ, y_p))
+/// with ρ the distance from the axle and θ the material angle of the point, so the radius varies
+/// along the line as the wheel's does around its circumference (physics.md §13.9).
+bool sliced_wheel_along(const PlacedProfiles& profiles, Vec3 q0, Vec3 dq, double t0, double& t) {
+  const SlicedWheelSurface& surface = *profiles.wheel_surface();
+  const double y_off = profiles.wheel_y_offset_mm(), r0 = profiles.wheel_r0_mm();
+  t = t0;
+  for (int it = 0; it < 30; ++it) {
+    const Vec3 q = q0 + t * dq;
+    const double rho2 = q.x * q.x + q.z * q.z, rho = std::sqrt(rho2);
+    const double phi = std::atan2(q.x, q.z);
+    const WheelSurfacePoint w = surface.at(profiles.wheel_theta_rad() + phi, q.y - y_off);
+    if (!w.found) return false;
+    const double f = rho - (r0 + w.z);
+    const double dphi = (q.z * dq.x - q.x * dq.z) / rho2;
+    const double df = (q.x * dq.x + q.z * dq.z) / rho - w.dz_dy * dq.y - w.dz_dtheta * dphi;
+    if (df == 0.0 || !std::isfinite(df)) return false;
+    const double step = f / df;
+    t -= step;
+    if (std::abs(step) < 1e-11) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 WheelsetPose pose_of(const model::WheelRailProblem& p, double z_ws_mm) {
   WheelsetPose pose;
   pose.rotation = roll_yaw_rotation(p.motion.roll_rad, p.motion.yaw_rad);
@@ -16,6 +44,7 @@ bool wheel_surface_along(const PlacedProfiles& profiles, const WheelsetPose& pos
   // f(t) = ρ(t) − r(y_p(t)): distance from the axle minus the wheel radius at that section.
   const Vec3 q0 = pose.rotation.transposed_times(from - pose.centre);
   const Vec3 dq = pose.rotation.transposed_times(dir);
+  if (profiles.wheel_surface() != nullptr) return sliced_wheel_along(profiles, q0, dq, t0, t);
   const double y_off = profiles.wheel_y_offset_mm(), r0 = profiles.wheel_r0_mm();
   CurveHint local;
   CurveHint& h = hint != nullptr ? *hint : local;
