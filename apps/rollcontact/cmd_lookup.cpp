@@ -15,6 +15,7 @@
 #include "batch/creep_lookup_build.hpp"
 #include "batch/parallel.hpp"
 #include "commands.hpp"
+#include "progress_line.hpp"
 #include "rollcontact/creep_lookup.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -67,19 +68,14 @@ int build_table(const LookupOptions& o, batch::Distribution& distribution) {
   auto seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
-  std::function<void(std::size_t)> progress;
-  if (!o.quiet && root)
-    progress = [&](std::size_t done) {
-      fmt::print(stderr, "\rlookup {}: {}/{} nodes, {:.1f} s", o.method, done, nodes, seconds());
-      std::fflush(stderr);
-    };
+  const auto progress = make_progress_line("lookup " + o.method, nodes, o.quiet || !root);
   const CreepLookupTable table =
       batch::build_creep_lookup(axes, s, threads, &distribution, progress);
   if (!root) return exit_ok;
   const double build_s = seconds();
   save_creep_lookup(table, o.output);
   if (!o.quiet)
-    fmt::print(stderr, "\nlookup {} (mx {}): {} nodes in {:.1f} s -> {}\n", o.method, o.mx, nodes,
+    fmt::print(stderr, "lookup {} (mx {}): {} nodes in {:.1f} s -> {}\n", o.method, o.mx, nodes,
                build_s, o.output);
   if (o.check > 0) {
     const batch::LookupAccuracy acc = batch::held_back_accuracy(

@@ -19,6 +19,7 @@
 #include "batch/parallel.hpp"
 #include "commands.hpp"
 #include "format/text/atomic_file.hpp"
+#include "progress_line.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::cli {
@@ -61,24 +62,16 @@ int run_table_command(const TableOptions& o, batch::Distribution& distribution) 
 
   const auto wall0 = std::chrono::steady_clock::now();
   const std::clock_t cpu0 = std::clock();
-  auto progress = [&](std::size_t done) {
-    const double t =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-    fmt::print(stderr, "\rtable {}: {}/{} cases, {:.1f} s", o.method, done, cases.size(), t);
-    std::fflush(stderr);
-  };
+  const auto progress = make_progress_line("table " + o.method, cases.size(), o.quiet);
   const std::vector<batch::TableRow> rows =
       distributed ? batch::run_table_distributed(cases, settings, distribution)
-                  : batch::run_table(
-                        cases, settings, threads,
-                        o.quiet ? std::function<void(std::size_t)>{} : std::function(progress));
+                  : batch::run_table(cases, settings, threads, progress);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   const double cpu = static_cast<double>(std::clock() - cpu0) / CLOCKS_PER_SEC;
   // Only the root writes and reports (mpirun's status is the worst of the processes'); no
   // collective call follows, so that a root that fails to write cannot leave the others waiting.
   if (!root) return exit_ok;
-  if (!o.quiet && !distributed) fmt::print(stderr, "\n");
 
   std::ostringstream csv;
   batch::write_table_csv(csv, rows);
