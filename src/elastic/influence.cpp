@@ -147,10 +147,116 @@ void add_layer_compliance(Component c, const Grid& grid, const CombinedMaterial&
   if (std::abs(dix) < grid.mx && std::abs(diy) < grid.my) kernel.at(dix, diy) += compliance;
 }
 
+/// The corner function on a lattice of corners, with what mirrored corners share computed once.
+/// r = √(X² + Y²), L1 = log(X + R) (sees Y only as Y²) and L2 = log(Y + R) (sees X only as X²)
+/// are the same bits at (X, ±Y) resp. (±X, Y) — plus_r forms the cancelling sum from the
+/// square of the other coordinate — so on a lattice symmetric about 0 (no rolling shift) half
+/// the logarithms, which dominate the set-up, are copies. F is then formed by the operations of
+/// corner() itself: kernels are bit for bit those of the plain evaluation.
+class CornerLattice {
+ public:
+  /// `share`: false evaluates corner() at every corner (the reference of the tests).
+  CornerLattice(const CornerContext& ctx, std::vector<Real> xs, bool share)
+      : ctx_(ctx),
+        xs_(std::move(xs)),
+        share_(share),
+        x_symmetric_(share && mirrored(xs_)),
+        r_(xs_.size()),
+        l1_(r_.size()),
+        l2_(r_.size()),
+        f_(r_.size()) {}
+
+  /// True when v[n−1−i] = −v[i] exactly for all i.
+  static bool mirrored(const std::vector<Real>& v) {
+    for (std::size_t i = 0, n = v.size(); i < n; ++i)
+      if (v[n - 1 - i] != -v[i]) return false;
+    return true;
+  }
+
+  /// Differences F(X_{i+1}, y) − F(X_i, y) of the corner row at y.
+  void row(Real y, std::vector<Real>& out) {
+    if (split()) {
+      radii_and_l1(y);
+      finish_row(y, out);
+      return;
+    }
+    for (std::size_t i = 0; i < xs_.size(); ++i) f_[i] = corner(ctx_, xs_[i], y);
+    differences(out);
+  }
+
+  /// The rows at y_low = −y_high and y_high, which share r and L1.
+  void row_pair(Real y_low, Real y_high, std::vector<Real>& low, std::vector<Real>& high) {
+    if (!split()) {
+      row(y_low, low);
+      row(y_high, high);
+      return;
+    }
+    radii_and_l1(y_high);
+    finish_row(y_low, low);
+    finish_row(y_high, high);
+  }
+
+ private:
+  /// nn, xx, yy: F from r, L1, L2; xy: F = r. The couplings take corner() as it is.
+  bool split() const noexcept {
+    return share_ && (ctx_.base == Component::nn || ctx_.base == Component::xx ||
+                      ctx_.base == Component::yy || ctx_.base == Component::xy);
+  }
+  bool logs() const noexcept { return ctx_.base != Component::xy; }
+
+  /// r and L1 of every corner of the row at y (the same at −y).
+  void radii_and_l1(Real y) {
+    const std::size_t n = xs_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t m = n - 1 - i;
+      if (x_symmetric_ && m < i) {
+        r_[i] = r_[m];
+      } else {
+        const Real x = xs_[i];
+        r_[i] = std::sqrt(x * x + y * y);
+      }
+      if (logs()) l1_[i] = guarded_log(plus_r(xs_[i], y, r_[i]), ctx_.log_floor);
+    }
+  }
+
+  /// L2 (halved on a mirrored x-lattice) and F of the row at y, then its differences.
+  void finish_row(Real y, std::vector<Real>& out) {
+    const std::size_t n = xs_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Real x = xs_[i], r = r_[i];
+      if (!logs()) {
+        f_[i] = r;
+        continue;
+      }
+      const std::size_t m = n - 1 - i;
+      l2_[i] = x_symmetric_ && m < i ? l2_[m] : guarded_log(plus_r(y, x, r), ctx_.log_floor);
+      // corner()'s operations, term for term.
+      const Real j1 = y * l1_[i];
+      const Real j2 = x * l2_[i];
+      if (ctx_.base == Component::nn)
+        f_[i] = j1 + j2;
+      else if (ctx_.base == Component::xx)
+        f_[i] = j1 + (1.0L - ctx_.nu) * j2;
+      else
+        f_[i] = j2 + (1.0L - ctx_.nu) * j1;
+    }
+    differences(out);
+  }
+
+  void differences(std::vector<Real>& out) const {
+    for (std::size_t i = 0; i + 1 < f_.size(); ++i) out[i] = f_[i + 1] - f_[i];
+  }
+
+  CornerContext ctx_;
+  std::vector<Real> xs_;
+  bool share_, x_symmetric_;
+  std::vector<Real> r_, l1_, l2_, f_;
+};
+
 /// The corner sums of component c on the grid, divided by G; `log_floor` [mm]: log terms whose
 /// argument lies below it count as 0.
 Kernel corner_sum_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
-                         double shift_x, double shift_y, Real log_floor) {
+                         double shift_x, double shift_y, Real log_floor, bool share = true) {
   const int mx = grid.mx, my = grid.my;
   Kernel kernel(mx, my);
   if (is_coupling(c) && !is_coupled(material)) return kernel;
@@ -160,33 +266,44 @@ Kernel corner_sum_kernel(Component c, const Grid& grid, const CombinedMaterial& 
   const CornerContext ctx{b.base, material.nu, log_floor, dx * 1e-20L};
   const Real factor = b.sign * prefactor(b.base, material.nu, material.k) / Real(material.g);
 
-  // Neighbouring offsets share corners: tabulate F once per corner instead of four times.
+  // Neighbouring offsets share corners: F is tabulated once per corner instead of four times.
   // Corner i in x sits at X_i = (i − mx + ½)·dx + shift_x, i = 0 … 2mx−1; offset dix has
-  // X₋ = X_{dix+mx−1} and X₊ = X_{dix+mx} (likewise in y). A row of x-differences
-  // F(X₊, Y_j) − F(X₋, Y_j) is kept for the previous corner row j.
+  // X₋ = X_{dix+mx−1} and X₊ = X_{dix+mx} (likewise in y). Offset diy is the difference of the
+  // x-differences of corner rows my+diy and my+diy−1.
   const int ncx = 2 * mx;
-  std::vector<Real> xs(static_cast<std::size_t>(ncx));
+  std::vector<Real> xs(static_cast<std::size_t>(ncx)), ys(static_cast<std::size_t>(2 * my));
   for (int i = 0; i < ncx; ++i)
     xs[static_cast<std::size_t>(i)] = (Real(i - mx) + 0.5L) * dx + shift_x;
-  std::vector<Real> prev(static_cast<std::size_t>(ncx - 1)), cur(prev.size());
-  auto row_differences = [&](int j, std::vector<Real>& out) {
-    const Real y = (Real(j - my) + 0.5L) * dy + shift_y;
-    Real f_left = corner(ctx, xs[0], y);
-    for (int i = 0; i + 1 < ncx; ++i) {
-      const Real f_right = corner(ctx, xs[static_cast<std::size_t>(i + 1)], y);
-      out[static_cast<std::size_t>(i)] = f_right - f_left;
-      f_left = f_right;
-    }
-  };
-  row_differences(0, prev);
-  for (int j = 1; j < 2 * my; ++j) {
-    row_differences(j, cur);
-    const int diy = j - my;  // offset whose Y₊ is corner j
+  for (int j = 0; j < 2 * my; ++j)
+    ys[static_cast<std::size_t>(j)] = (Real(j - my) + 0.5L) * dy + shift_y;
+  CornerLattice lattice(ctx, xs, share);
+  const auto store = [&](int diy, const std::vector<Real>& upper, const std::vector<Real>& lower) {
     for (int i = 0; i + 1 < ncx; ++i) {
       const std::size_t s = static_cast<std::size_t>(i);
-      kernel.at(i - (mx - 1), diy) = static_cast<double>(factor * (cur[s] - prev[s]));
+      kernel.at(i - (mx - 1), diy) = static_cast<double>(factor * (upper[s] - lower[s]));
     }
+  };
+  const auto y = [&](int j) { return ys[static_cast<std::size_t>(j)]; };
+  std::vector<Real> prev(static_cast<std::size_t>(ncx - 1)), cur(prev.size());
+  if (!share || !CornerLattice::mirrored(ys)) {
+    lattice.row(y(0), prev);
+    for (int j = 1; j < 2 * my; ++j) {
+      lattice.row(y(j), cur);
+      store(j - my, cur, prev);
+      prev.swap(cur);
+    }
+    return kernel;
+  }
+  // Mirrored rows my−1−k and my+k together, outwards from the centre: offsets ±k.
+  std::vector<Real> prev_low(prev.size()), cur_low(prev.size());
+  lattice.row_pair(y(my - 1), y(my), prev_low, prev);
+  store(0, prev, prev_low);
+  for (int k = 1; k < my; ++k) {
+    lattice.row_pair(y(my - 1 - k), y(my + k), cur_low, cur);
+    store(k, cur, prev);
+    store(-k, prev_low, cur_low);
     prev.swap(cur);
+    prev_low.swap(cur_low);
   }
   return kernel;
 }
@@ -204,6 +321,12 @@ Kernel make_continuous_kernel(Component c, const Grid& grid, const CombinedMater
                               double shift_x, double shift_y) {
   check_grid(material, grid);
   return corner_sum_kernel(c, grid, material, shift_x, shift_y, std::numeric_limits<Real>::min());
+}
+
+Kernel make_unshared_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                            double shift_x, double shift_y) {
+  check_grid(material, grid);
+  return corner_sum_kernel(c, grid, material, shift_x, shift_y, Real(grid.dx) * 1e-10L, false);
 }
 
 Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material, double shift_x,

@@ -69,4 +69,10 @@ Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& materi
 Kernel make_continuous_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                               double shift_x = 0.0, double shift_y = 0.0);
 
+/// make_kernel's elastic corner sums with the corner function evaluated at every corner, nothing
+/// shared between mirrored corners: the reference that tests compare make_kernel with, bit for
+/// bit.
+Kernel make_unshared_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                            double shift_x = 0.0, double shift_y = 0.0);
+
 }  // namespace rollcontact::elastic

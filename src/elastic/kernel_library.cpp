@@ -32,6 +32,8 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
     ++computed_;
     return make_kernel(c, grid, m, shift_x, shift_y);
   }
+  bool outgrown = false;
+  int kept_mx = 0, kept_my = 0;  // of the entry a grid outgrew
   for (auto it = entries_.begin(); it != entries_.end(); ++it) {
     const Entry& e = *it;
     if (e.c != c || e.dx != grid.dx || e.dy != grid.dy || e.g != m.g || e.nu != m.nu ||
@@ -43,15 +45,21 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
       entries_.splice(entries_.begin(), entries_, it);
       return cut_kernel(entries_.front().kernel, grid.mx, grid.my);
     }
+    kept_mx = e.kernel.mx();
+    kept_my = e.kernel.my();
     kept_bytes_ -= bytes_of(it->kernel);
     entries_.erase(it);  // too small: replaced by a larger one below
+    outgrown = true;
     break;
   }
-  // A quarter more than asked in each direction, so that slowly growing patches do not
-  // tabulate again at every step.
+  // A grid that outgrew its kernel is a growing patch: a quarter more than asked in each
+  // direction, so that it does not tabulate again at every step. A first request gets its own
+  // size: most grids never grow (a module-3 sequence), and the closed forms are the set-up.
   Grid big = grid;
-  big.mx = grid.mx + (grid.mx + 3) / 4;
-  big.my = grid.my + (grid.my + 3) / 4;
+  if (outgrown) {
+    big.mx = std::max(grid.mx + (grid.mx + 3) / 4, kept_mx);
+    big.my = std::max(grid.my + (grid.my + 3) / 4, kept_my);
+  }
   ++computed_;
   if (4 * bytes_for(big.mx, big.my) > budget_bytes_)
     return make_kernel(c, grid, m, shift_x, shift_y);

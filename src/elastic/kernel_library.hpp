@@ -5,6 +5,7 @@
 // corner abscissae, the same operations). Wheel/rail patches change their MX, MY from case to
 // case and within the vertical-force iteration; cutting the kernel out of a kept larger one
 // replaces the closed forms (logarithms in long double, most of the set-up time) by a copy.
+// A kernel is tabulated at the grid's own size first and with a margin once a grid outgrew it.
 
 #include <array>
 #include <cstddef>
