@@ -143,6 +143,13 @@ class FftwEngine final : public FftEngine {
     if (rows_out == 0) return;
     inverse_columns(channels_fftw_[static_cast<std::size_t>(c)], rows_out);
   }
+  void prepare_transforms(int rows_in, int rows_out) override {
+    ensure_convolution_plans();
+    for (int rows : {rows_in, rows_out}) {
+      rows = std::clamp(rows, 0, n_slow());
+      if (rows > 0) pruned(rows);
+    }
+  }
   void to_channel_layout(const std::complex<double>* spectrum,
                          std::complex<double>* out) const override {
     const std::size_t half = static_cast<std::size_t>(n_fast() / 2 + 1);

@@ -57,8 +57,7 @@ BlockConvolution::BlockConvolution(int n_out, int n_in, const std::vector<const 
   engine_->set_channel_count(n_in + n_out);
   // Make the pruned plans now so that apply() never plans.
   std::fill_n(engine_->real_data(), engine_->real_size(), 0.0);
-  engine_->forward_to_channel(my_, 0);
-  engine_->inverse_from_channel(0, my_);
+  engine_->prepare_transforms(my_, my_);
 }
 
 const std::complex<double>* BlockConvolution::block(int i, int j) const noexcept {

@@ -69,9 +69,9 @@ CirculantPreconditioner::CirculantPreconditioner(const Grid& grid, const Combine
     return;
   }
   engine_->set_convolution_symbol(inverse_symbol.data());
-  // One pass through the row-pruned transforms makes the engine plan them now, not in apply().
+  // The row-pruned transforms are planned now, not in apply().
   std::fill_n(work, engine_->real_size(), 0.0);
-  engine_->execute_convolution(my_, my_);
+  engine_->prepare_transforms(my_, my_);
 }
 
 void CirculantPreconditioner::convolve(const double* r) {
