@@ -312,6 +312,18 @@ TEST(MakeKernel, SharingMirroredCornersChangesNoBit) {
           << static_cast<int>(c) << " " << k.mx << "x" << k.my << " dx " << k.dx << " dy " << k.dy
           << " shift " << k.sx << "," << k.sy;
     }
+  // Several components on one lattice (shared logarithms), couplings in between.
+  const std::vector<Component> cs{Component::xx, Component::xn, Component::xy, Component::yy,
+                                  Component::nn, Component::ny, Component::yx};
+  for (const Case& k : cases) {
+    const Grid grid{.mx = k.mx, .my = k.my, .xl = 0, .yl = 0, .dx = k.dx, .dy = k.dy};
+    const std::vector<Kernel> together = make_kernels(cs, grid, m, k.sx, k.sy);
+    ASSERT_EQ(together.size(), cs.size());
+    for (std::size_t q = 0; q < cs.size(); ++q)
+      EXPECT_EQ(together[q].data(), make_unshared_kernel(cs[q], grid, m, k.sx, k.sy).data())
+          << static_cast<int>(cs[q]) << " " << k.mx << "x" << k.my << " shift " << k.sx << ","
+          << k.sy;
+  }
 }
 
 TEST(MakeKernel, StripKernelMatchesReference) {

@@ -29,6 +29,19 @@ TEST(KernelLibrary, CutKernelsEqualTabulatedOnesExactly) {
   }
 }
 
+TEST(KernelLibrary, SeveralComponentsAtOnceEqualTheirKernels) {
+  const CombinedMaterial m{.g = 82000.0, .nu = 0.28, .k = 0.03};
+  KernelLibrary lib;
+  lib.kernel(Component::nn, grid(12, 10), m);  // kept: cut, the others tabulated together
+  const std::vector<Component> cs{Component::xx, Component::nn, Component::xn, Component::yy};
+  for (auto [mx, my] : {std::pair{12, 10}, std::pair{14, 9}, std::pair{5, 5}}) {
+    const std::vector<Kernel> k = lib.kernels(cs, grid(mx, my), m, 0.2, 0.0);
+    for (std::size_t q = 0; q < cs.size(); ++q)
+      EXPECT_EQ(k[q].data(), make_kernel(cs[q], grid(mx, my), m, 0.2, 0.0).data())
+          << static_cast<int>(cs[q]) << " " << mx << "x" << my;
+  }
+}
+
 TEST(KernelLibrary, TabulatesOnlyWhenAGridOutgrowsTheKeptKernel) {
   const CombinedMaterial m{.g = 1.0, .nu = 0.3, .k = 0.0};
   KernelLibrary lib;
