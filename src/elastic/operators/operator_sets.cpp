@@ -48,7 +48,8 @@ void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMat
 namespace {
 
 /// The plain 3×3 C (zero couplings when K = 0) and the normal displacement due to p_t.
-void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, KernelLibrary* lib) {
+void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, KernelLibrary* lib,
+                    SpectrumCache& spectra) {
   const Grid& grid = s.grid;
   const CombinedMaterial& material = s.material;
   std::vector<Component> cs{Component::xx, Component::xy, Component::yy, Component::nn};
@@ -64,7 +65,7 @@ void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, Kerne
     s.nt_x = std::move(k[6]);
     s.nt_y = std::move(k[7]);
     s.nt = std::make_unique<BlockConvolution>(1, 2, std::vector<const Kernel*>{&s.nt_x, &s.nt_y},
-                                              fft.backend, fft.planning);
+                                              fft.backend, fft.planning, &spectra);
   }
   const Kernel* xn = coupled ? &s.c_xn : nullptr;
   const Kernel* yn = coupled ? &s.c_yn : nullptr;
@@ -72,7 +73,7 @@ void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, Kerne
   const Kernel* ny = coupled ? &s.nt_y : nullptr;
   s.full = std::make_unique<BlockConvolution>(
       3, 3, std::vector<const Kernel*>{&s.c_xx, &s.c_xy, xn, &s.c_xy, &s.c_yy, yn, nx, ny, &s.c_nn},
-      fft.backend, fft.planning);
+      fft.backend, fft.planning, &spectra);
 }
 
 /// Steady rolling: A = C − C′ with C′ the coefficients seen from one step downstream.
@@ -91,7 +92,7 @@ void assemble_steady_part(TangentialOperatorSet& s, bool coupled, KernelLibrary*
 /// Shift and transient rolling: A = C, and the previous-time displacement of the particles now
 /// at the element centres (C′ when rolling, C for a shift).
 void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice fft,
-                             KernelLibrary* lib) {
+                             KernelLibrary* lib, SpectrumCache& spectra) {
   const bool rolling = s.kind == model::TangentialKind::TransientRolling;
   const double sx = s.shift_x, sy = s.shift_y;
   s.xx = s.c_xx;
@@ -114,7 +115,7 @@ void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice f
       2, 3,
       std::vector<const Kernel*>{&s.prev_xx, &s.prev_xy, coupled ? &s.prev_xn : nullptr, &s.prev_xy,
                                  &s.prev_yy, coupled ? &s.prev_yn : nullptr},
-      fft.backend, fft.planning);
+      fft.backend, fft.planning, &spectra);
 }
 
 }  // namespace
@@ -138,17 +139,21 @@ void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
   set.shift_x = key.shift_x;
   set.shift_y = key.shift_y;
   const bool coupled = is_coupled(material);
-  assemble_plain(set, coupled, fft, lib);
+  // The products share their kernels' spectra: for shifts and transient rolling A is C, and
+  // the previous displacement of a shift is C again.
+  SpectrumCache spectra;
+  assemble_plain(set, coupled, fft, lib, spectra);
   if (set.steady())
     assemble_steady_part(set, coupled, lib);
   else
-    assemble_transient_part(set, coupled, fft, lib);
+    assemble_transient_part(set, coupled, fft, lib, spectra);
   set.a = std::make_unique<BlockConvolution>(
       2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.xy, &set.yy}, fft.backend,
-      fft.planning);
+      fft.planning, &spectra);
   if (coupled)
-    set.tn = std::make_unique<BlockConvolution>(
-        2, 1, std::vector<const Kernel*>{&set.tn_x, &set.tn_y}, fft.backend, fft.planning);
+    set.tn =
+        std::make_unique<BlockConvolution>(2, 1, std::vector<const Kernel*>{&set.tn_x, &set.tn_y},
+                                           fft.backend, fft.planning, &spectra);
   set.interaction = std::move(interaction);
   for (BlockConvolution* product :
        {set.a.get(), set.prev.get(), set.tn.get(), set.nt.get(), set.full.get()})
