@@ -14,15 +14,16 @@ bench/tangential_problem.cpp solve. Each file is run as a whole process,
 
     /usr/bin/time -f "%e %M" rollcontact run FILE -q --timing
 
---repeat times; reported are the median wall time (timed around the process here: %e has
-10 ms steps), the largest peak resident set, the median
+--repeat times (with --exe-before, an earlier binary alternating with it run by run); reported
+are the median and the fastest wall time (timed around the process here: %e has 10 ms steps), the largest peak resident set, the median
 split set-up / solve / output that `--timing` prints to stderr, and CONTACT's whole-process time
 (gfortran -O2, one thread, this machine class; issue 16) with the ratio.
 
     /usr/bin/python3 bench/whole_process.py --exe build/release/bin/rollcontact --out table.md
 
 --quick runs the smallest size of each kind once (a smoke run, about a second). --before FILE
-adds the columns of an earlier run (its --json output) to the table. Standard library only.
+adds the columns of an earlier run (its --json output) to the table; --doc docs/benchmarks.md
+puts the table between its markers. Standard library only.
 """
 
 import argparse
@@ -155,16 +156,24 @@ def first_case(json_path):
     return doc["cases"][0]
 
 
-def measure(exe, path, repeat, timing):
-    walls, peaks, splits = [], [], []
+def summarise(runs):
+    """Median wall time and split, fastest run and largest peak RSS of (wall, peak, split) runs."""
+    walls = [w for w, _, _ in runs]
+    splits = [sp for _, _, sp in runs]
+    phases = sorted({k for sp in splits for k in sp})
+    split = {k: statistics.median([sp.get(k, 0.0) for sp in splits]) for k in phases}
+    return {"wall": statistics.median(walls), "fastest": min(walls), "walls": walls,
+            "peak_mb": max(p for _, p, _ in runs), "split": split}
+
+
+def measure(exes, path, repeat, timing):
+    """Runs each binary `repeat` times on `path`, the binaries alternating run by run (so that a
+    load that drifts during the measurement affects them alike); one summary per binary."""
+    runs = [[] for _ in exes]
     for _ in range(repeat):
-        wall, peak, split = run_once(exe, path, timing)
-        walls.append(wall)
-        peaks.append(peak)
-        splits.append(split)
-    phases = sorted({k for s in splits for k in s})
-    split = {k: statistics.median([s.get(k, 0.0) for s in splits]) for k in phases}
-    return {"wall": statistics.median(walls), "walls": walls, "peak_mb": max(peaks), "split": split}
+        for k, exe in enumerate(exes):
+            runs[k].append(run_once(exe, path, timing))
+    return [summarise(r) for r in runs]
 
 
 def case_facts(json_path):
@@ -174,7 +183,9 @@ def case_facts(json_path):
 
 
 def run_all(args, work):
-    results = []
+    """Measurements of --exe and, when given, --exe-before (interleaved): two result lists."""
+    exes = [args.exe] + ([args.exe_before] if args.exe_before else [])
+    results = [[] for _ in exes]
     forces_of = {}
     for kind, i in cases_to_run(args.quick):
         mx, my, scale = SIZES[i]
@@ -183,12 +194,14 @@ def run_all(args, work):
         forces = forces_of.get(i) if kind == "steady_forces" else None
         path.write_text(inp_text(kind, mx, my, scale, forces))
         repeat = 1 if args.quick else args.repeat
-        r = measure(args.exe, path, repeat, not args.no_timing)
+        summaries = measure(exes, path, repeat, not args.no_timing)
         facts = case_facts(path.with_suffix(".json"))
         if kind == "steady":
             forces_of[i] = (facts["fx"] / (0.3 * facts["fn"]), facts["fy"] / (0.3 * facts["fn"]))
-        r.update({"kind": kind, "size": i, "grid": f"{mx}x{my}", "input": name, **facts})
-        results.append(r)
+        for k, r in enumerate(summaries):
+            r.update({"kind": kind, "size": i, "grid": f"{mx}x{my}", "input": name, **facts})
+            results[k].append(r)
+        r = summaries[0]
         print(f"{name}: {r['wall']:.3f} s, {r['peak_mb']:.0f} MB, ncon {facts['ncon']}, "
               f"split {r['split']}", file=sys.stderr)
     return results
@@ -204,9 +217,9 @@ def fmt_split(split):
 def markdown(results, before, args):
     key = lambda r: (r["kind"], r["size"])
     old = {key(r): r for r in before}
-    head = "| input | grid | in contact | CONTACT (s) | rollcontact (s) | speed-up | peak RSS (MB) |"
-    head += " set-up / solve / output (s) |"
-    sep = "|---|---|---:|---:|---:|---:|---:|---|"
+    head = "| input | grid | in contact | CONTACT (s) | rollcontact (s) | speed-up | fastest run (s) |"
+    head += " peak RSS (MB) | set-up / solve / output (s) |"
+    sep = "|---|---|---:|---:|---:|---:|---:|---:|---|"
     if before:
         head += " before (s) | before: set-up / solve / output (s) | before: speed-up |"
         sep += "---:|---|---:|"
@@ -216,8 +229,10 @@ def markdown(results, before, args):
         peak = f"{r['peak_mb']:.0f}"
         if key(r) in CONTACT_PEAK_MB:
             peak += f" (CONTACT {CONTACT_PEAK_MB[key(r)]:.0f})"
+        fastest = r.get("fastest", r["wall"])
         row = (f"| {KIND_LABEL[r['kind']]} | {r['grid']} | {r['ncon']} | {contact:g} | "
-               f"{r['wall']:.3f} | {contact / r['wall']:.1f}× | {peak} | {fmt_split(r['split'])} |")
+               f"{r['wall']:.3f} | {contact / r['wall']:.1f}× | {fastest:.3f} | {peak} | "
+               f"{fmt_split(r['split'])} |")
         if before:
             b = old.get(key(r))
             if b:
@@ -228,13 +243,32 @@ def markdown(results, before, args):
     reps = 1 if args.quick else args.repeat
     lines += [
         "",
-        f"Wall time: median of {reps} whole processes (`/usr/bin/time -f \"%e %M\" rollcontact run "
-        "FILE -q --timing`, timed around the process); peak RSS: the largest of them (%M). Set-up (reading, "
-        "geometry, influence kernels, operators, FFT plans, preconditioners), solve and output "
-        "(report, JSON) from `--timing` (medians); process start-up and exit are in the wall time "
-        "only. CONTACT: gfortran -O2, one thread, this machine class (issue 16).",
+        f"Wall time: median of {reps} whole processes `/usr/bin/time -f \"%e %M\" rollcontact run "
+        "FILE -q --timing`, timed around the process; fastest run: the quickest of them; peak "
+        "RSS: the largest (%M)."
+        + (" Before: the earlier binary, run alternately with this one." if args.exe_before else "")
+        + " Set-up (reading, geometry, influence kernels, operators, FFT plans, preconditioners), "
+        "solve and output (report, JSON): medians of `--timing`; process start-up and exit count "
+        "in the wall time only. CONTACT: gfortran -O2, one thread, this machine class (issue 16).",
     ]
     return "\n".join(lines) + "\n"
+
+
+BEGIN = "<!-- bench/whole_process.py: begin (generated, do not edit) -->"
+END = "<!-- bench/whole_process.py: end -->"
+
+
+def replace_block(doc, table):
+    """Puts the table between the BEGIN and END markers of `doc` (appended when missing)."""
+    text = doc.read_text()
+    block = f"{BEGIN}\n{table}{END}"
+    if BEGIN in text and END in text:
+        head, rest = text.split(BEGIN, 1)
+        tail = rest.split(END, 1)[1]
+        text = head + block + tail
+    else:
+        text = text.rstrip("\n") + "\n\n" + block + "\n"
+    doc.write_text(text)
 
 
 def main():
@@ -243,19 +277,31 @@ def main():
     ap.add_argument("--out", required=True, help="Markdown table to write")
     ap.add_argument("--json", help="also write the raw measurements here (for --before)")
     ap.add_argument("--before", help="raw measurements of an earlier run (its --json)")
+    ap.add_argument("--exe-before", help="an earlier binary, run alternately with --exe")
+    ap.add_argument("--json-before", help="write the --exe-before measurements here")
     ap.add_argument("--repeat", type=int, default=5, help="runs per input (median)")
     ap.add_argument("--quick", action="store_true", help="smallest size of each kind, one run")
     ap.add_argument("--no-timing", action="store_true", help="binary without --timing")
+    ap.add_argument("--doc", help="also put the table between the markers of this Markdown file")
     ap.add_argument("--work", help="folder for the .inp files and outputs (default: temporary)")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory(prefix="rollcontact-whole-") as tmp:
         work = Path(args.work) if args.work else Path(tmp)
         work.mkdir(parents=True, exist_ok=True)
-        results = run_all(args, work)
-    before = json.loads(Path(args.before).read_text()) if args.before else []
-    Path(args.out).write_text(markdown(results, before, args))
+        measured = run_all(args, work)
+    results = measured[0]
+    if args.exe_before:
+        before = measured[1]
+    else:
+        before = json.loads(Path(args.before).read_text()) if args.before else []
+    table = markdown(results, before, args)
+    Path(args.out).write_text(table)
+    if args.doc:
+        replace_block(Path(args.doc), table)
     if args.json:
         Path(args.json).write_text(json.dumps(results, indent=1) + "\n")
+    if args.json_before and before:
+        Path(args.json_before).write_text(json.dumps(before, indent=1) + "\n")
 
 
 if __name__ == "__main__":
