@@ -15,6 +15,9 @@ install(TARGETS rollcontact rollcontact_version rollcontact_grid rollcontact_for
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS rollcontact_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(TARGET rollcontact_mpi)
+  install(TARGETS rollcontact_mpi LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/rollcontact)
+endif()
 # The CONTACT-compatible C library, also under CONTACT's file name in bin/ (python_intfc loads
 # $CONTACTDIR/bin/contact_addon_linux64.so).
 install(TARGETS rollcontact_cntc LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

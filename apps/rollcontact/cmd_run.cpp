@@ -68,8 +68,17 @@ struct RunSettings {
   std::string backend = "default";
   bool measure = false;
   bool quiet = false;
+  bool timing = false;
   int threads = 1;
 };
+
+/// --timing: where the wall time went, on stderr so that reports and console stay as they are.
+void print_timing(const batch::RunTiming& t) {
+  fmt::print(stderr, "timing: read     {:.4f} s\n", t.read);
+  fmt::print(stderr, "timing: set-up   {:.4f} s\n", t.read + t.setup);
+  fmt::print(stderr, "timing: solve    {:.4f} s\n", t.solve);
+  fmt::print(stderr, "timing: output   {:.4f} s\n", t.output);
+}
 
 int run_job(const std::filesystem::path& input, const RunSettings& settings, bool show_picture,
             batch::Distribution* distribution = nullptr) {
@@ -113,6 +122,7 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
   // Under MPI only the root writes the report and knows the verdict; mpirun's status is the
   // worst of the processes'.
   if (distributed && !distribution->is_root()) return exit_ok;
+  if (settings.timing) print_timing(result.timing);
   if (!quiet && distributed) fmt::print("{} case(s) failed\n", result.failed);
   if (!quiet)
     fmt::print("wrote {} and {}\n", result.report_path.string(), result.json_path.string());
@@ -140,6 +150,9 @@ CommandRunner add_run_command(CLI::App& app, batch::Distribution& distribution) 
   cmd->add_option("-o,--output-dir", settings->output_dir,
                   "folder for the outputs (default: next to FILE)");
   add_solver_options(cmd, *settings);
+  cmd->add_flag("--timing", settings->timing,
+                "print the wall time of reading, set-up (kernels, operators, FFT plans), solve "
+                "and output to stderr");
   cmd->add_option("-j,--threads", settings->threads,
                   "worker threads: sequences (result elements) run in parallel, each in its "
                   "order; the outputs are those of one thread")

@@ -12,7 +12,10 @@
 #include "rollcontact/errors.hpp"
 
 #ifdef ROLLCONTACT_HAVE_MPI
-#include <mpi.h>
+#include <dlfcn.h>
+
+#include <cstdio>
+#include <filesystem>
 #endif
 
 namespace rollcontact::cli {
@@ -27,123 +30,39 @@ bool launched_by_mpi() {
 
 namespace {
 
-/// MPI_COMM_WORLD. Work is handed out through a counter on the root that every rank advances
-/// with an atomic fetch-and-add (one-sided, passive target), so no rank has to serve requests
-/// and the root computes like the others; the results are gathered once at the end.
-class MpiDistribution final : public batch::Distribution {
- public:
-  MpiDistribution(int& argc, char**& argv) {
-    MPI_Init(&argc, &argv);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
-    MPI_Comm_size(MPI_COMM_WORLD, &size_);
+/// The MPI plugin (rollcontact_mpi.so) next to the executable (build tree) or in the installed
+/// library folder; null with `error` set when neither loads.
+void* load_mpi_plugin(std::string& error) {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path dir = ec ? std::filesystem::path(".") : exe.parent_path();
+  for (const std::filesystem::path& candidate :
+       {dir / "rollcontact_mpi.so", dir / ROLLCONTACT_MPI_PLUGIN_INSTALLED}) {
+    void* handle = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+    if (handle != nullptr) return handle;
+    error += std::string(error.empty() ? "" : "; ") + dlerror();
   }
-  ~MpiDistribution() override { MPI_Finalize(); }
-  MpiDistribution(const MpiDistribution&) = delete;
-  MpiDistribution& operator=(const MpiDistribution&) = delete;
+  return nullptr;
+}
 
-  [[nodiscard]] int rank() const override { return rank_; }
-  [[nodiscard]] int size() const override { return size_; }
-
-  std::vector<std::string> map_gather(
-      std::size_t n, std::size_t chunk,
-      const std::function<std::string(std::size_t)>& body) override {
-    std::vector<std::pair<std::uint64_t, std::string>> mine;
-    std::string failure;
-    compute_share(n, chunk == 0 ? 1 : chunk, body, mine, failure);
-    const int failed = max_over_processes(failure.empty() ? 0 : 1);
-    if (failed != 0)
-      throw Error(failure.empty() ? "a case failed on another MPI process" : failure);
-    return gather(n, mine);
+/// MPI_Init through the plugin; exits (status 3) when it cannot be loaded, since running every
+/// case on every rank would write the same files from all of them.
+std::unique_ptr<batch::Distribution> mpi_distribution(int& argc, char**& argv) {
+  std::string error;
+  void* plugin = load_mpi_plugin(error);
+  using Make = batch::Distribution* (*)(int*, char***);
+  Make make = plugin == nullptr
+                  ? nullptr
+                  : reinterpret_cast<Make>(dlsym(plugin, "rollcontact_mpi_distribution"));
+  if (make == nullptr) {
+    std::fprintf(stderr,
+                 "rollcontact: internal error: launched by mpirun, but the MPI module "
+                 "cannot be loaded: %s\n",
+                 plugin == nullptr ? error.c_str() : dlerror());
+    std::exit(3);
   }
-
-  int max_over_processes(int value) override {
-    int out = value;
-    MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    return out;
-  }
-
- private:
-  void compute_share(std::size_t n, std::size_t chunk,
-                     const std::function<std::string(std::size_t)>& body,
-                     std::vector<std::pair<std::uint64_t, std::string>>& mine,
-                     std::string& failure) const {
-    std::uint64_t* counter = nullptr;
-    MPI_Win win = MPI_WIN_NULL;
-    const MPI_Aint bytes = rank_ == 0 ? static_cast<MPI_Aint>(sizeof(std::uint64_t)) : 0;
-    MPI_Win_allocate(bytes, sizeof(std::uint64_t), MPI_INFO_NULL, MPI_COMM_WORLD, &counter, &win);
-    if (rank_ == 0) {
-      MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, win);
-      *counter = 0;
-      MPI_Win_unlock(0, win);
-    }
-    MPI_Barrier(MPI_COMM_WORLD);
-    MPI_Win_lock_all(0, win);
-    const std::uint64_t step = chunk;
-    for (;;) {
-      std::uint64_t start = 0;
-      MPI_Fetch_and_op(&step, &start, MPI_UINT64_T, 0, 0, MPI_SUM, win);
-      MPI_Win_flush(0, win);
-      if (start >= n) break;
-      const std::uint64_t end = std::min<std::uint64_t>(n, start + step);
-      for (std::uint64_t i = start; i < end; ++i) {
-        if (!failure.empty()) continue;  // keep taking chunks so that the others finish
-        try {
-          mine.emplace_back(i, body(static_cast<std::size_t>(i)));
-        } catch (const std::exception& e) {
-          failure = e.what();
-        }
-      }
-    }
-    MPI_Win_unlock_all(win);
-    MPI_Win_free(&win);
-  }
-
-  /// Packs (index, length, bytes) records, gathers them on the root and puts them in order.
-  std::vector<std::string> gather(
-      std::size_t n, const std::vector<std::pair<std::uint64_t, std::string>>& mine) const {
-    std::string packed;
-    for (const auto& [index, bytes] : mine) {
-      const std::uint64_t header[2] = {index, bytes.size()};
-      packed.append(reinterpret_cast<const char*>(header), sizeof header);
-      packed.append(bytes);
-    }
-    if (packed.size() > static_cast<std::size_t>(INT32_MAX))
-      throw Error("more than 2 GB of results on one MPI process");
-    const int length = static_cast<int>(packed.size());
-    std::vector<int> lengths(static_cast<std::size_t>(size_)), offsets(lengths.size());
-    MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    std::string all;
-    if (rank_ == 0) {
-      std::size_t total = 0;
-      for (std::size_t r = 0; r < lengths.size(); ++r) {
-        offsets[r] = static_cast<int>(total);
-        total += static_cast<std::size_t>(lengths[r]);
-      }
-      if (total > static_cast<std::size_t>(INT32_MAX))
-        throw Error("more than 2 GB of results to gather on the root");
-      all.resize(total);
-    }
-    MPI_Gatherv(packed.data(), length, MPI_BYTE, all.data(), lengths.data(), offsets.data(),
-                MPI_BYTE, 0, MPI_COMM_WORLD);
-    std::vector<std::string> out;
-    if (rank_ != 0) return out;
-    out.resize(n);
-    std::vector<char> seen(n, 0);
-    for (std::size_t pos = 0; pos < all.size();) {
-      std::uint64_t header[2];
-      std::memcpy(header, all.data() + pos, sizeof header);
-      pos += sizeof header;
-      out[header[0]] = all.substr(pos, header[1]);
-      seen[header[0]] = 1;
-      pos += header[1];
-    }
-    for (std::size_t i = 0; i < n; ++i)
-      if (!seen[i]) throw Error("case " + std::to_string(i + 1) + " was computed by no process");
-    return out;
-  }
-
-  int rank_ = 0, size_ = 1;
-};
+  return std::unique_ptr<batch::Distribution>(make(&argc, &argv));
+}
 
 }  // namespace
 
@@ -151,7 +70,7 @@ class MpiDistribution final : public batch::Distribution {
 
 std::unique_ptr<batch::Distribution> make_process_distribution(int& argc, char**& argv) {
 #ifdef ROLLCONTACT_HAVE_MPI
-  if (launched_by_mpi()) return std::make_unique<MpiDistribution>(argc, argv);
+  if (launched_by_mpi()) return mpi_distribution(argc, argv);
 #endif
   (void)argc;
   (void)argv;

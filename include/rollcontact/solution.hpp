@@ -107,7 +107,11 @@ struct SolverReport {
   int normal_coarse_iterations = 0;  ///< CG iterations on coarser grids (nested-iteration start)
   int normal_products = 0;           ///< influence-matrix products (FFT convolutions) used
   double normal_iteration_seconds = 0.0;  ///< wall time of the fine-grid CG iterations [s]
-  double normal_residual = 0.0;           ///< final relative change ||Δp||/||p||
+  /// Wall time of the case's set-up [s]: discretisation (grid, undeformed distance) and the
+  /// operators built for it (influence kernels, FFT plans, preconditioners, coarse levels).
+  /// Operators reused from an earlier case cost nothing here.
+  double setup_seconds = 0.0;
+  double normal_residual = 0.0;  ///< final relative change ||Δp||/||p||
   /// Tangential iterations: products with the tangential operator (semismooth Newton) or
   /// sweeps (Gauss–Seidel), summed over the creepage Newton loop.
   int tangential_iterations = 0;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -25,6 +26,18 @@
 namespace rollcontact::batch {
 
 namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Adds a solved case's wall time to the split: its set-up as the solver measured it, the rest
+/// as solve time.
+void add_case_time(const CaseOutcome& c, double seconds, RunTiming& timing) {
+  const double setup = c.solved && !c.wheel_rail ? c.solution.solver.setup_seconds : 0.0;
+  timing.setup += setup;
+  timing.solve += seconds - setup;
+}
 
 /// Message prefix that lets a user find the case: "file:line: case N: " (parts when known).
 std::string case_context(const format::CaseRecord& r) {
@@ -305,16 +318,27 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
   RunResult result;
   RunState state{options, {}, {}};
   std::vector<CaseOutcome> solved;
-  if (options.threads > 1) solved = solve_in_parallel(problems, state, options);
+  auto start = std::chrono::steady_clock::now();
+  if (options.threads > 1) {
+    solved = solve_in_parallel(problems, state, options);
+    for (const CaseOutcome& c : solved) add_case_time(c, 0.0, result.timing);
+    result.timing.solve += seconds_since(start);
+  }
   std::vector<CaseOutput> outputs;
   outputs.reserve(problems.size());
   for (std::size_t k = 0; k < problems.size(); ++k) {
+    start = std::chrono::steady_clock::now();
     CaseOutcome outcome = solved.empty() ? solve_one(problems[k], state) : std::move(solved[k]);
+    if (solved.empty()) add_case_time(outcome, seconds_since(start), result.timing);
+    start = std::chrono::steady_clock::now();
     outputs.push_back(render_case(problems[k], outcome, output_stem));
+    result.timing.output += seconds_since(start);
     if (options.on_case) options.on_case(outcome, k, problems.size());
     result.cases.push_back(std::move(outcome));
   }
+  start = std::chrono::steady_clock::now();
   write_run_files(outputs, input_name, output_stem, result);
+  result.timing.output += seconds_since(start);
   return result;
 }
 
@@ -400,8 +424,10 @@ RunResult run_input_file(const std::filesystem::path& input, const RunOptions& o
       options.output_dir.empty() ? input.parent_path() : options.output_dir;
   const std::filesystem::path stem = dir / input.stem();
   refuse_overwriting_input(input, stem);
+  const auto start = std::chrono::steady_clock::now();
   std::vector<format::InputCase> problems = read_problems(input);
   validate_cases(problems);
+  const double read_seconds = seconds_since(start);
   // One process checks (and creates) the folder; the others wait for it before they write.
   const bool root = options.distribution == nullptr || options.distribution->is_root();
   int prepared = 0;
@@ -415,6 +441,7 @@ RunResult run_input_file(const std::filesystem::path& input, const RunOptions& o
   if (options.distribution != nullptr && options.distribution->max_over_processes(prepared) != 0)
     throw InputError(dir.string(), 0, "the output folder could not be prepared (see the root)");
   RunResult result = run_problems(problems, input.filename().string(), stem, options);
+  result.timing.read = read_seconds;
   result.inputs = std::move(problems);
   return result;
 }

@@ -46,6 +46,15 @@ struct RunOptions {
   Distribution* distribution = nullptr;
 };
 
+/// Where the wall time of a run went [s] (one thread: with threads > 1 set-up and solve are
+/// summed over the workers). Process start-up and exit are not included.
+struct RunTiming {
+  double read = 0.0;    ///< reading and checking the input file
+  double setup = 0.0;   ///< per case: discretisation and operators built (SolverReport)
+  double solve = 0.0;   ///< per case: the rest of the solve
+  double output = 0.0;  ///< reports, JSON and side files
+};
+
 struct RunResult {
   std::vector<CaseOutcome> cases;
   /// The cases as read, in the order of `cases` (run_input_file only; run_problems leaves it
@@ -53,6 +62,7 @@ struct RunResult {
   std::vector<format::InputCase> inputs;
   std::filesystem::path report_path, json_path;
   int failed = 0;  ///< errors + not converged
+  RunTiming timing;
 };
 
 /// Solves one case of an input file with `solver` (the sequence of its result element): the

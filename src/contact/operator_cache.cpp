@@ -13,7 +13,7 @@ OperatorCache::OperatorCache(ops::FftChoice fft, OperatorCacheCapacity capacity)
 NormalOperators& OperatorCache::normal(const Grid& grid, const CombinedMaterial& material,
                                        elastic::InteractionPtr interaction) {
   const OperatorKey key{grid, material, model::TangentialKind::None, 0.0, 0.0, interaction};
-  return normal_.get(key, case_number_, [&](NormalOperators& e) {
+  return normal_.get(key, case_number_, build_seconds_, [&](NormalOperators& e) {
     ops::assemble_normal(e, grid, material, fft_, interaction, &kernels_);
     // Viscoelastic (M=1): solved without it (normal/active_set_solver.hpp, spec-additions §B5).
     if (!material.viscoelastic())
@@ -30,7 +30,7 @@ TangentialOperators& OperatorCache::tangential(const Grid& grid, const CombinedM
       ops::tangential_loading_key(kind, shift_x_mm, shift_y_mm);
   const OperatorKey key{grid,       material, loading.kind, loading.shift_x, loading.shift_y,
                         interaction};
-  return tangential_.get(key, case_number_, [&](TangentialOperators& e) {
+  return tangential_.get(key, case_number_, build_seconds_, [&](TangentialOperators& e) {
     ops::assemble_tangential(e, grid, material, kind, shift_x_mm, shift_y_mm, fft_, interaction,
                              &kernels_);
     e.preconditioner = std::make_unique<tangential::TangentialPreconditioner>(e.c_xx, e.c_xy,
@@ -43,7 +43,7 @@ CoarseSteadyOperators& OperatorCache::coarse_steady(const Grid& grid,
                                                     double shift_x_mm, double shift_y_mm) {
   const OperatorKey key{grid,       material,   model::TangentialKind::SteadyRolling,
                         shift_x_mm, shift_y_mm, nullptr};
-  return coarse_steady_.get(key, case_number_, [&](CoarseSteadyOperators& e) {
+  return coarse_steady_.get(key, case_number_, build_seconds_, [&](CoarseSteadyOperators& e) {
     ops::assemble_steady_rolling(e, grid, material, shift_x_mm, shift_y_mm, fft_, &kernels_);
     e.preconditioner = std::make_unique<tangential::TangentialPreconditioner>(e.c_xx, e.c_xy,
                                                                               e.c_yy, fft_.backend);

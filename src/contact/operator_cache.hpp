@@ -9,6 +9,7 @@
 // references handed out stay valid for the whole case. A cache may therefore hold more entries
 // than its capacity while one case uses more.
 
+#include <chrono>
 #include <cstddef>
 #include <list>
 #include <memory>
@@ -71,17 +72,22 @@ class OperatorShelf {
  public:
   explicit OperatorShelf(std::size_t capacity) : capacity_(capacity) {}
 
-  /// The entry for `key`, built by `build(Entry&)` in place if missing.
+  /// The entry for `key`, built by `build(Entry&)` in place if missing; the wall time of a
+  /// build is added to `build_seconds`.
   template <class Build>
-  Entry& get(const OperatorKey& key, unsigned long case_number, Build&& build) {
+  Entry& get(const OperatorKey& key, unsigned long case_number, double& build_seconds,
+             Build&& build) {
     for (auto it = entries_.begin(); it != entries_.end(); ++it)
       if (it->key == key) {
         it->last_case = case_number;
         entries_.splice(entries_.begin(), entries_, it);
         return *entries_.front().entry;
       }
+    const auto start = std::chrono::steady_clock::now();
     auto entry = std::make_unique<Entry>();
     build(*entry);
+    build_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     entries_.push_front({key, std::move(entry), case_number});
     ++builds_;
     evict(case_number);
@@ -144,11 +150,14 @@ class OperatorCache {
   /// Operator sets assembled so far and held now, all kinds together (for tests and reports).
   std::size_t builds() const noexcept;
   std::size_t size() const noexcept;
+  /// Wall time spent building operator sets so far [s] (kernels, FFT plans, preconditioners).
+  double build_seconds() const noexcept { return build_seconds_; }
 
  private:
   elastic::operators::FftChoice fft_;
   elastic::KernelLibrary kernels_;  ///< kernels of all sets, reused across grid sizes
   unsigned long case_number_ = 0;
+  double build_seconds_ = 0.0;
   OperatorShelf<NormalOperators> normal_;
   OperatorShelf<TangentialOperators> tangential_;
   OperatorShelf<CoarseSteadyOperators> coarse_steady_;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <memory>
 
@@ -1052,6 +1053,8 @@ elastic::InteractionPtr interaction_of(geometry::PlanformParts& parts) {
 Solution PatchSolver::solve(const model::PatchProblem& problem) {
   model::validate(problem);  // every front end's values pass the same check
   Impl& st = *impl_;
+  const auto start = std::chrono::steady_clock::now();
+  const double built_before = st.operators.build_seconds();
   const model::Bodies& b = problem.bodies;
 
   Solution sol;
@@ -1061,9 +1064,12 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
   sol.grid = disc.grid;
   sol.hertz = disc.hertz;
   sol.h = std::move(disc.h);
+  const double geometry_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   st.operators.begin_case();
   CaseSolver(problem, st, sol, interaction_of(disc.parts)).run();
+  sol.solver.setup_seconds = geometry_seconds + (st.operators.build_seconds() - built_before);
 
   if (!problem.subsurface.empty())
     sol.subsurface = post::compute_subsurface(problem.subsurface, problem.bodies, sol);

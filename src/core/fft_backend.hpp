@@ -55,6 +55,11 @@ class FftEngine {
   /// channel c → real_data(), with the row pruning of execute_inverse(rows_out). Channel c and
   /// spectrum_data() are destroyed.
   virtual void inverse_from_channel(int c, int rows_out);
+  /// Makes now the plans that execute_convolution(rows_in, rows_out) and the channel transforms
+  /// with these row counts need, so that the products never plan, without transforming
+  /// anything: a pass through the transforms costs an FFT pair per operator at set-up. The
+  /// default plans nothing (engines without plans).
+  virtual void prepare_transforms(int /*rows_in*/, int /*rows_out*/) {}
   /// A spectrum in the layout of spectrum_data() rearranged into the channel layout (symbols).
   virtual void to_channel_layout(const std::complex<double>* spectrum,
                                  std::complex<double>* out) const;

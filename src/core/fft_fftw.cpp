@@ -37,17 +37,8 @@ class FftwEngine final : public FftEngine {
       release();
       throw std::bad_alloc();
     }
-    {
-      // FFTW is row-major: n0 is the slow index, n1 the contiguous one.
-      std::lock_guard<std::mutex> lock(planner_mutex());
-      forward_ = fftw_plan_dft_r2c_2d(n_slow, n_fast, real_, spectrum_, flags_);
-      inverse_ = fftw_plan_dft_c2r_2d(n_slow, n_fast, spectrum_, real_, flags_);
-    }
-    if (forward_ == nullptr || inverse_ == nullptr) {
-      release();
-      throw Error("FFTW could not create a plan");
-    }
-    // FFTW_MEASURE scribbles on the arrays while planning.
+    // The full 2-D plans are made on first use: most engines run one full forward transform
+    // (a kernel's symbol) and never the full inverse, and every plan costs planner time.
     std::fill_n(real_, real_size(), 0.0);
   }
   FftwEngine(const FftwEngine&) = delete;
@@ -56,13 +47,13 @@ class FftwEngine final : public FftEngine {
 
   void forward(const double* in, std::complex<double>* out) override {
     std::memcpy(real_, in, sizeof(double) * real_size());
-    fftw_execute(forward_);
+    fftw_execute(full_plan(forward_, true));
     std::memcpy(static_cast<void*>(out), spectrum_, sizeof(fftw_complex) * spectrum_size());
   }
   void inverse(const std::complex<double>* in, double* out) override {
     // Multi-dimensional c2r always destroys its input: work on the engine's copy.
     std::memcpy(spectrum_, static_cast<const void*>(in), sizeof(fftw_complex) * spectrum_size());
-    fftw_execute(inverse_);
+    fftw_execute(full_plan(inverse_, false));
     std::memcpy(out, real_, sizeof(double) * real_size());
   }
   std::string_view name() const noexcept override { return "fftw"; }
@@ -74,7 +65,7 @@ class FftwEngine final : public FftEngine {
   void execute_forward(int rows_in) override {
     rows_in = std::clamp(rows_in, 0, n_slow());
     if (rows_in == n_slow()) {
-      fftw_execute(forward_);
+      fftw_execute(full_plan(forward_, true));
       return;
     }
     if (rows_in == 0) {
@@ -91,7 +82,7 @@ class FftwEngine final : public FftEngine {
   void execute_inverse(int rows_out) override {
     rows_out = std::clamp(rows_out, 0, n_slow());
     if (rows_out == n_slow()) {
-      fftw_execute(inverse_);
+      fftw_execute(full_plan(inverse_, false));
       return;
     }
     if (rows_out == 0) return;
@@ -152,6 +143,13 @@ class FftwEngine final : public FftEngine {
     if (rows_out == 0) return;
     inverse_columns(channels_fftw_[static_cast<std::size_t>(c)], rows_out);
   }
+  void prepare_transforms(int rows_in, int rows_out) override {
+    ensure_convolution_plans();
+    for (int rows : {rows_in, rows_out}) {
+      rows = std::clamp(rows, 0, n_slow());
+      if (rows > 0) pruned(rows);
+    }
+  }
   void to_channel_layout(const std::complex<double>* spectrum,
                          std::complex<double>* out) const override {
     const std::size_t half = static_cast<std::size_t>(n_fast() / 2 + 1);
@@ -162,6 +160,44 @@ class FftwEngine final : public FftEngine {
   }
 
  private:
+  /// The full 2-D r2c (forward) or c2r plan in `plan`, made now if missing. Planning may
+  /// overwrite the arrays (FFTW_MEASURE): their contents are saved and restored.
+  fftw_plan full_plan(fftw_plan& plan, bool forward) {
+    if (plan != nullptr) return plan;
+    const ArraysKept kept(*this);
+    {
+      // FFTW is row-major: n0 is the slow index, n1 the contiguous one.
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      plan = forward ? fftw_plan_dft_r2c_2d(n_slow(), n_fast(), real_, spectrum_, flags_)
+                     : fftw_plan_dft_c2r_2d(n_slow(), n_fast(), spectrum_, real_, flags_);
+    }
+    if (plan == nullptr) throw Error("FFTW could not create a plan");
+    return plan;
+  }
+
+  /// Keeps real_ and spectrum_ across planning. FFTW_ESTIMATE never touches the arrays (FFTW
+  /// manual §4.3.2), so only the other flags pay for copies (at 575×647 two arrays of 12 MB
+  /// each, written to fresh pages, for every plan).
+  class ArraysKept {
+   public:
+    explicit ArraysKept(FftwEngine& e) : e_(e) {
+      if (e.flags_ == FFTW_ESTIMATE) return;
+      real_.assign(e.real_, e.real_ + e.real_size());
+      spectrum_.assign(e.spectrum_[0], e.spectrum_[0] + 2 * e.spectrum_size());
+    }
+    ~ArraysKept() {
+      if (e_.flags_ == FFTW_ESTIMATE) return;
+      std::copy(real_.begin(), real_.end(), e_.real_);
+      std::copy(spectrum_.begin(), spectrum_.end(), e_.spectrum_[0]);
+    }
+    ArraysKept(const ArraysKept&) = delete;
+    ArraysKept& operator=(const ArraysKept&) = delete;
+
+   private:
+    FftwEngine& e_;
+    std::vector<double> real_, spectrum_;
+  };
+
   /// The out-of-place slow-index transforms between spectrum_ and the column-major columns_.
   void ensure_convolution_plans() {
     if (columns_ != nullptr) return;
@@ -213,13 +249,12 @@ class FftwEngine final : public FftEngine {
   }
 
   /// Plans are made on first use of a row count (FftConvolution does this in its constructor,
-  /// so its apply() never plans). Planning overwrites the arrays: their contents are saved.
+  /// so its apply() never plans). Planning may overwrite the arrays: ArraysKept keeps them.
   const Pruned& pruned(int rows) {
     for (const Pruned& p : pruned_) {
       if (p.rows == rows) return p;
     }
-    const std::vector<double> real_copy(real_, real_ + real_size());
-    const std::vector<double> spectrum_copy(spectrum_[0], spectrum_[0] + 2 * spectrum_size());
+    const ArraysKept kept(*this);
     const int nf = n_fast(), ns = n_slow(), half = nf / 2 + 1;
     Pruned p{rows, nullptr, nullptr};
     {
@@ -240,8 +275,6 @@ class FftwEngine final : public FftEngine {
         p.rows_inverse == nullptr) {
       throw Error("FFTW could not create a pruned plan");
     }
-    std::copy(real_copy.begin(), real_copy.end(), real_);
-    std::copy(spectrum_copy.begin(), spectrum_copy.end(), spectrum_[0]);
     return pruned_.back();
   }
 

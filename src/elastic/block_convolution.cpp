@@ -13,8 +13,21 @@ int wrap(int d, int n) {
 
 }  // namespace
 
+SpectrumCache::Spectrum SpectrumCache::find(const Kernel& k, int nf, int ns) const {
+  for (const Entry& e : entries_)
+    if (e.nf == nf && e.ns == ns && e.kernel->mx() == k.mx() && e.kernel->my() == k.my() &&
+        (e.kernel == &k || e.kernel->data() == k.data()))
+      return e.spectrum;
+  return nullptr;
+}
+
+void SpectrumCache::add(const Kernel& k, int nf, int ns, Spectrum spectrum) {
+  entries_.push_back({&k, nf, ns, std::move(spectrum)});
+}
+
 BlockConvolution::BlockConvolution(int n_out, int n_in, const std::vector<const Kernel*>& kernels,
-                                   FftBackendKind backend, FftPlanning planning)
+                                   FftBackendKind backend, FftPlanning planning,
+                                   SpectrumCache* cache)
     : n_out_(n_out), n_in_(n_in), mx_(0), my_(0) {
   if (kernels.size() != static_cast<std::size_t>(n_out) * static_cast<std::size_t>(n_in))
     throw std::invalid_argument("BlockConvolution: wrong number of kernels");
@@ -41,6 +54,12 @@ BlockConvolution::BlockConvolution(int n_out, int n_in, const std::vector<const 
       block_spectrum_[b] = block_spectrum_[static_cast<std::size_t>(same - kernels.begin())];
       continue;
     }
+    block_spectrum_[b] = static_cast<int>(spectra_.size());
+    SpectrumCache::Spectrum shared = cache ? cache->find(*kernel, nf, ns) : nullptr;
+    if (shared) {
+      spectra_.push_back(std::move(shared));
+      continue;
+    }
     std::fill_n(real, engine_->real_size(), 0.0);
     for (int diy = -(my_ - 1); diy < my_; ++diy) {
       double* dst = real + static_cast<std::size_t>(wrap(diy, ns)) * static_cast<std::size_t>(nf);
@@ -49,21 +68,21 @@ BlockConvolution::BlockConvolution(int n_out, int n_in, const std::vector<const 
     engine_->execute_forward(ns);
     std::complex<double>* spectrum = engine_->spectrum_data();
     for (std::size_t s = 0; s < engine_->spectrum_size(); ++s) spectrum[s] *= scale;
-    block_spectrum_[b] = static_cast<int>(spectra_.size());
-    spectra_.emplace_back(engine_->spectrum_size());
-    engine_->to_channel_layout(spectrum, spectra_.back().data());
+    auto layout = std::make_shared<std::vector<std::complex<double>>>(engine_->spectrum_size());
+    engine_->to_channel_layout(spectrum, layout->data());
+    spectra_.push_back(layout);
+    if (cache) cache->add(*kernel, nf, ns, spectra_.back());
   }
   // Channels 0 … n_in−1 hold the transformed inputs, the next n_out the outputs being formed.
   engine_->set_channel_count(n_in + n_out);
   // Make the pruned plans now so that apply() never plans.
   std::fill_n(engine_->real_data(), engine_->real_size(), 0.0);
-  engine_->forward_to_channel(my_, 0);
-  engine_->inverse_from_channel(0, my_);
+  engine_->prepare_transforms(my_, my_);
 }
 
 const std::complex<double>* BlockConvolution::block(int i, int j) const noexcept {
   const int k = block_spectrum_[static_cast<std::size_t>(i * n_in_ + j)];
-  return k < 0 ? nullptr : spectra_[static_cast<std::size_t>(k)].data();
+  return k < 0 ? nullptr : spectra_[static_cast<std::size_t>(k)]->data();
 }
 
 namespace {

@@ -13,11 +13,33 @@
 
 namespace rollcontact::elastic {
 
+/// Kernel spectra shared between the products of one operator set: the C_xx of the 2×2 product
+/// and of the 3×3 one are the same transform (the same bits), made and stored once. Keyed by the
+/// kernel's values and the transform size; one FFT backend per cache, and the kernels must
+/// outlive it.
+class SpectrumCache {
+ public:
+  using Spectrum = std::shared_ptr<const std::vector<std::complex<double>>>;
+  /// The spectrum of a kernel equal to `k` on an nf × ns engine, or null.
+  Spectrum find(const Kernel& k, int nf, int ns) const;
+  void add(const Kernel& k, int nf, int ns, Spectrum spectrum);
+
+ private:
+  struct Entry {
+    const Kernel* kernel;
+    int nf, ns;
+    Spectrum spectrum;
+  };
+  std::vector<Entry> entries_;
+};
+
 class BlockConvolution {
  public:
   /// kernels[i * n_in + j] is K_ij or nullptr for a zero block; all kernels share mx, my.
+  /// `cache` (optional): spectra shared with the other products of an operator set.
   BlockConvolution(int n_out, int n_in, const std::vector<const Kernel*>& kernels,
-                   FftBackendKind backend, FftPlanning planning = FftPlanning::Estimate);
+                   FftBackendKind backend, FftPlanning planning = FftPlanning::Estimate,
+                   SpectrumCache* cache = nullptr);
 
   /// p[j] and u[i] point at mx*my values (ix fastest); u is overwritten. No allocation.
   void apply(const double* const* p, double* const* u);
@@ -40,7 +62,7 @@ class BlockConvolution {
 
   // Distinct kernel spectra (normalisation included) and, per block, the index of its spectrum
   // (−1: zero block).
-  std::vector<std::vector<std::complex<double>>> spectra_;
+  std::vector<SpectrumCache::Spectrum> spectra_;
   std::vector<int> block_spectrum_;
 };
 

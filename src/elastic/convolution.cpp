@@ -39,9 +39,9 @@ FftConvolution::FftConvolution(const Kernel& kernel, FftBackendKind backend, Fft
   std::vector<std::complex<double>> kernel_hat(engine_->spectrum_size());
   for (std::size_t i = 0; i < kernel_hat.size(); ++i) kernel_hat[i] = scale * spectrum[i];
   engine_->set_convolution_symbol(kernel_hat.data());
-  // One pass through the pruned transforms lets the engine make its plans now, not in apply().
+  // The pruned transforms are planned now, not in apply().
   std::fill_n(real, engine_->real_size(), 0.0);
-  engine_->execute_convolution(my_, my_);
+  engine_->prepare_transforms(my_, my_);
 }
 
 void FftConvolution::apply(const double* p, double* u) {

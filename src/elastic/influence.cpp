@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -147,48 +148,190 @@ void add_layer_compliance(Component c, const Grid& grid, const CombinedMaterial&
   if (std::abs(dix) < grid.mx && std::abs(diy) < grid.my) kernel.at(dix, diy) += compliance;
 }
 
-/// The corner sums of component c on the grid, divided by G; `log_floor` [mm]: log terms whose
-/// argument lies below it count as 0.
-Kernel corner_sum_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
-                         double shift_x, double shift_y, Real log_floor) {
+/// The corner function on a lattice of corners, with what mirrored corners and components share
+/// computed once. r = √(X² + Y²), L1 = log(X + R) (sees Y only as Y²) and L2 = log(Y + R) (sees
+/// X only as X²) are the same bits at (X, ±Y) resp. (±X, Y) — plus_r forms the cancelling sum
+/// from the square of the other coordinate — so on a lattice symmetric about 0 (no rolling
+/// shift) half the logarithms, which dominate the set-up, are copies; and nn, xx, yy are formed
+/// from the same r, L1, L2 (xy from r alone). F is then formed by the operations of corner()
+/// itself: kernels are bit for bit those of the plain evaluation, one component at a time.
+class CornerLattice {
+ public:
+  using Rows = std::vector<std::vector<Real>>;  ///< one row per component
+
+  /// One context per component (all with the same ν and floors). `share`: false evaluates
+  /// corner() at every corner for every component (the reference of the tests).
+  CornerLattice(std::vector<CornerContext> ctxs, std::vector<Real> xs, bool share)
+      : ctxs_(std::move(ctxs)),
+        xs_(std::move(xs)),
+        split_(share && std::all_of(ctxs_.begin(), ctxs_.end(), splits)),
+        logs_(std::any_of(ctxs_.begin(), ctxs_.end(),
+                          [](const CornerContext& c) { return c.base != Component::xy; })),
+        x_symmetric_(split_ && mirrored(xs_)),
+        r_(xs_.size()),
+        l1_(r_.size()),
+        l2_(r_.size()),
+        f_(ctxs_.size(), std::vector<Real>(r_.size())) {}
+
+  /// True when v[n−1−i] = −v[i] exactly for all i.
+  static bool mirrored(const std::vector<Real>& v) {
+    for (std::size_t i = 0, n = v.size(); i < n; ++i)
+      if (v[n - 1 - i] != -v[i]) return false;
+    return true;
+  }
+  /// nn, xx, yy: F from r, L1, L2; xy: F = r. The couplings take corner() as it is.
+  static bool splits(const CornerContext& c) {
+    return c.base == Component::nn || c.base == Component::xx || c.base == Component::yy ||
+           c.base == Component::xy;
+  }
+  bool split() const noexcept { return split_; }
+
+  /// Differences F(X_{i+1}, y) − F(X_i, y) of the corner row at y, per component.
+  void row(Real y, Rows& out) {
+    if (split_) {
+      radii_and_l1(y);
+      finish_row(y, out);
+      return;
+    }
+    for (std::size_t k = 0; k < ctxs_.size(); ++k)
+      for (std::size_t i = 0; i < xs_.size(); ++i) f_[k][i] = corner(ctxs_[k], xs_[i], y);
+    differences(out);
+  }
+
+  /// The rows at y_low = −y_high and y_high, which share r and L1.
+  void row_pair(Real y_low, Real y_high, Rows& low, Rows& high) {
+    if (!split_) {
+      row(y_low, low);
+      row(y_high, high);
+      return;
+    }
+    radii_and_l1(y_high);
+    finish_row(y_low, low);
+    finish_row(y_high, high);
+  }
+
+ private:
+  /// r and L1 of every corner of the row at y (the same at −y).
+  void radii_and_l1(Real y) {
+    const std::size_t n = xs_.size();
+    const Real log_floor = ctxs_.front().log_floor;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t m = n - 1 - i;
+      if (x_symmetric_ && m < i) {
+        r_[i] = r_[m];
+      } else {
+        const Real x = xs_[i];
+        r_[i] = std::sqrt(x * x + y * y);
+      }
+      if (logs_) l1_[i] = guarded_log(plus_r(xs_[i], y, r_[i]), log_floor);
+    }
+  }
+
+  /// L2 (halved on a mirrored x-lattice) and F of the row at y, then its differences.
+  void finish_row(Real y, Rows& out) {
+    const std::size_t n = xs_.size();
+    const Real log_floor = ctxs_.front().log_floor;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Real x = xs_[i];
+      const std::size_t m = n - 1 - i;
+      if (logs_)
+        l2_[i] = x_symmetric_ && m < i ? l2_[m] : guarded_log(plus_r(y, x, r_[i]), log_floor);
+      // corner()'s operations, term for term.
+      const Real j1 = logs_ ? y * l1_[i] : 0.0L;
+      const Real j2 = logs_ ? x * l2_[i] : 0.0L;
+      for (std::size_t k = 0; k < ctxs_.size(); ++k) {
+        const CornerContext& c = ctxs_[k];
+        Real& f = f_[k][i];
+        if (c.base == Component::xy)
+          f = r_[i];
+        else if (c.base == Component::nn)
+          f = j1 + j2;
+        else if (c.base == Component::xx)
+          f = j1 + (1.0L - c.nu) * j2;
+        else
+          f = j2 + (1.0L - c.nu) * j1;
+      }
+    }
+    differences(out);
+  }
+
+  void differences(Rows& out) const {
+    for (std::size_t k = 0; k < f_.size(); ++k)
+      for (std::size_t i = 0; i + 1 < f_[k].size(); ++i) out[k][i] = f_[k][i + 1] - f_[k][i];
+  }
+
+  std::vector<CornerContext> ctxs_;
+  std::vector<Real> xs_;
+  bool split_, logs_, x_symmetric_;
+  std::vector<Real> r_, l1_, l2_;
+  Rows f_;
+};
+
+/// The corner sums of the components `cs` on the grid, divided by G, tabulated together on one
+/// corner lattice; `log_floor` [mm]: log terms whose argument lies below it count as 0.
+std::vector<Kernel> corner_sum_kernels(const std::vector<Component>& cs, const Grid& grid,
+                                       const CombinedMaterial& material, double shift_x,
+                                       double shift_y, Real log_floor, bool share = true) {
   const int mx = grid.mx, my = grid.my;
-  Kernel kernel(mx, my);
-  if (is_coupling(c) && !is_coupled(material)) return kernel;
-
-  const BaseComponent b = base_of(c);
+  std::vector<Kernel> kernels(cs.size(), Kernel(mx, my));
   const Real dx = grid.dx, dy = grid.dy;
-  const CornerContext ctx{b.base, material.nu, log_floor, dx * 1e-20L};
-  const Real factor = b.sign * prefactor(b.base, material.nu, material.k) / Real(material.g);
+  std::vector<CornerContext> ctxs;
+  std::vector<Real> factors;
+  std::vector<std::size_t> which;  // kernels[which[k]] gets lattice component k
+  for (std::size_t q = 0; q < cs.size(); ++q) {
+    if (is_coupling(cs[q]) && !is_coupled(material)) continue;  // stays zero
+    const BaseComponent b = base_of(cs[q]);
+    ctxs.push_back({b.base, material.nu, log_floor, dx * 1e-20L});
+    factors.push_back(b.sign * prefactor(b.base, material.nu, material.k) / Real(material.g));
+    which.push_back(q);
+  }
+  if (ctxs.empty()) return kernels;
 
-  // Neighbouring offsets share corners: tabulate F once per corner instead of four times.
+  // Neighbouring offsets share corners: F is tabulated once per corner instead of four times.
   // Corner i in x sits at X_i = (i − mx + ½)·dx + shift_x, i = 0 … 2mx−1; offset dix has
-  // X₋ = X_{dix+mx−1} and X₊ = X_{dix+mx} (likewise in y). A row of x-differences
-  // F(X₊, Y_j) − F(X₋, Y_j) is kept for the previous corner row j.
+  // X₋ = X_{dix+mx−1} and X₊ = X_{dix+mx} (likewise in y). Offset diy is the difference of the
+  // x-differences of corner rows my+diy and my+diy−1.
   const int ncx = 2 * mx;
-  std::vector<Real> xs(static_cast<std::size_t>(ncx));
+  std::vector<Real> xs(static_cast<std::size_t>(ncx)), ys(static_cast<std::size_t>(2 * my));
   for (int i = 0; i < ncx; ++i)
     xs[static_cast<std::size_t>(i)] = (Real(i - mx) + 0.5L) * dx + shift_x;
-  std::vector<Real> prev(static_cast<std::size_t>(ncx - 1)), cur(prev.size());
-  auto row_differences = [&](int j, std::vector<Real>& out) {
-    const Real y = (Real(j - my) + 0.5L) * dy + shift_y;
-    Real f_left = corner(ctx, xs[0], y);
-    for (int i = 0; i + 1 < ncx; ++i) {
-      const Real f_right = corner(ctx, xs[static_cast<std::size_t>(i + 1)], y);
-      out[static_cast<std::size_t>(i)] = f_right - f_left;
-      f_left = f_right;
+  for (int j = 0; j < 2 * my; ++j)
+    ys[static_cast<std::size_t>(j)] = (Real(j - my) + 0.5L) * dy + shift_y;
+  CornerLattice lattice(ctxs, xs, share);
+  using Rows = CornerLattice::Rows;
+  const auto store = [&](int diy, const Rows& upper, const Rows& lower) {
+    for (std::size_t k = 0; k < ctxs.size(); ++k) {
+      Kernel& kernel = kernels[which[k]];
+      for (int i = 0; i + 1 < ncx; ++i) {
+        const std::size_t s = static_cast<std::size_t>(i);
+        kernel.at(i - (mx - 1), diy) =
+            static_cast<double>(factors[k] * (upper[k][s] - lower[k][s]));
+      }
     }
   };
-  row_differences(0, prev);
-  for (int j = 1; j < 2 * my; ++j) {
-    row_differences(j, cur);
-    const int diy = j - my;  // offset whose Y₊ is corner j
-    for (int i = 0; i + 1 < ncx; ++i) {
-      const std::size_t s = static_cast<std::size_t>(i);
-      kernel.at(i - (mx - 1), diy) = static_cast<double>(factor * (cur[s] - prev[s]));
+  const auto y = [&](int j) { return ys[static_cast<std::size_t>(j)]; };
+  Rows prev(ctxs.size(), std::vector<Real>(static_cast<std::size_t>(ncx - 1))), cur = prev;
+  if (!lattice.split() || !CornerLattice::mirrored(ys)) {
+    lattice.row(y(0), prev);
+    for (int j = 1; j < 2 * my; ++j) {
+      lattice.row(y(j), cur);
+      store(j - my, cur, prev);
+      prev.swap(cur);
     }
-    prev.swap(cur);
+    return kernels;
   }
-  return kernel;
+  // Mirrored rows my−1−k and my+k together, outwards from the centre: offsets ±k.
+  Rows prev_low = prev, cur_low = prev;
+  lattice.row_pair(y(my - 1), y(my), prev_low, prev);
+  store(0, prev, prev_low);
+  for (int k = 1; k < my; ++k) {
+    lattice.row_pair(y(my - 1 - k), y(my + k), cur_low, cur);
+    store(k, cur, prev);
+    store(-k, prev_low, cur_low);
+    prev.swap(cur);
+    prev_low.swap(cur_low);
+  }
+  return kernels;
 }
 
 void check_grid(const CombinedMaterial& material, const Grid& grid) {
@@ -203,13 +346,24 @@ void check_grid(const CombinedMaterial& material, const Grid& grid) {
 Kernel make_continuous_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                               double shift_x, double shift_y) {
   check_grid(material, grid);
-  return corner_sum_kernel(c, grid, material, shift_x, shift_y, std::numeric_limits<Real>::min());
+  return std::move(
+      corner_sum_kernels({c}, grid, material, shift_x, shift_y, std::numeric_limits<Real>::min())
+          .front());
 }
 
-Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material, double shift_x,
-                   double shift_y) {
+Kernel make_unshared_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                            double shift_x, double shift_y) {
   check_grid(material, grid);
-  Kernel kernel = corner_sum_kernel(c, grid, material, shift_x, shift_y, Real(grid.dx) * 1e-10L);
+  return std::move(
+      corner_sum_kernels({c}, grid, material, shift_x, shift_y, Real(grid.dx) * 1e-10L, false)
+          .front());
+}
+
+namespace {
+
+/// What make_kernel adds to the corner sums, and its check of the result.
+void finish_kernel(Component c, const Grid& grid, const CombinedMaterial& material, double shift_x,
+                   double shift_y, Kernel& kernel) {
   add_layer_compliance(c, grid, material, shift_x, shift_y, kernel);
   if (material.viscoelastic()) add_viscous_parts(c, grid, material, shift_x, shift_y, kernel);
   // Element sizes far outside what the closed forms can represent (e.g. DX = 1e30 mm) overflow
@@ -220,7 +374,37 @@ Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& materi
           fmt::format("element size DX = {} mm, DY = {} mm overflows the influence coefficients",
                       grid.dx, grid.dy));
     }
-  return kernel;
+}
+
+}  // namespace
+
+std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& grid,
+                                 const CombinedMaterial& material, double shift_x, double shift_y) {
+  check_grid(material, grid);
+  const Real floor = Real(grid.dx) * 1e-10L;
+  // nn, xx, yy and xy on one lattice (shared logarithms); the couplings one by one.
+  std::vector<Component> shared;
+  for (Component c : cs)
+    if (CornerLattice::splits({base_of(c).base, 0.0L, 0.0L, 0.0L})) shared.push_back(c);
+  std::vector<Kernel> together =
+      corner_sum_kernels(shared, grid, material, shift_x, shift_y, floor);
+  std::vector<Kernel> out;
+  out.reserve(cs.size());
+  std::size_t next = 0;
+  for (Component c : cs) {
+    if (CornerLattice::splits({base_of(c).base, 0.0L, 0.0L, 0.0L}))
+      out.push_back(std::move(together[next++]));
+    else
+      out.push_back(
+          std::move(corner_sum_kernels({c}, grid, material, shift_x, shift_y, floor).front()));
+    finish_kernel(c, grid, material, shift_x, shift_y, out.back());
+  }
+  return out;
+}
+
+Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material, double shift_x,
+                   double shift_y) {
+  return std::move(make_kernels({c}, grid, material, shift_x, shift_y).front());
 }
 
 }  // namespace rollcontact::elastic

@@ -61,6 +61,12 @@ inline bool is_coupled(const CombinedMaterial& material) noexcept {
 Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                    double shift_x = 0.0, double shift_y = 0.0);
 
+/// make_kernel for several components on the same grid, bit for bit: nn, xx, yy and xy are
+/// tabulated together on one corner lattice (their logarithms shared).
+std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& grid,
+                                 const CombinedMaterial& material, double shift_x = 0.0,
+                                 double shift_y = 0.0);
+
 /// The elastic corner sums of make_kernel (no layer, no viscous part) without CONTACT's guard
 /// that drops a log term below δx·1e−10 (physics.md §3.2): that guard, harmless at the fixed
 /// offsets of make_kernel, makes the coefficients jump by ~1e-3 where a corner passes within
@@ -68,5 +74,11 @@ Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& materi
 /// in the shift; x·log x = 0 at x = 0 only.
 Kernel make_continuous_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                               double shift_x = 0.0, double shift_y = 0.0);
+
+/// make_kernel's elastic corner sums with the corner function evaluated at every corner, nothing
+/// shared between mirrored corners: the reference that tests compare make_kernel with, bit for
+/// bit.
+Kernel make_unshared_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
+                            double shift_x = 0.0, double shift_y = 0.0);
 
 }  // namespace rollcontact::elastic

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace rollcontact::elastic {
 
@@ -26,44 +28,102 @@ Kernel cut_kernel(const Kernel& big, int mx, int my) {
 
 Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMaterial& m,
                              double shift_x, double shift_y) {
-  // The quadrature of a viscous part follows the grid's length (its kinks), so a kernel cut from
-  // a larger grid's would differ in the last digits: viscoelastic kernels are made directly.
-  if (m.viscoelastic()) {
-    ++computed_;
-    return make_kernel(c, grid, m, shift_x, shift_y);
-  }
+  return std::move(kernels({c}, grid, m, shift_x, shift_y).front());
+}
+
+bool KernelLibrary::matches(const Entry& e, Component c, const Grid& grid,
+                            const CombinedMaterial& m, double shift_x, double shift_y) {
+  return e.c == c && e.dx == grid.dx && e.dy == grid.dy && e.g == m.g && e.nu == m.nu &&
+         e.k == m.k && e.layer == m.layer_compliance &&
+         e.normal_layer == m.normal_layer_compliance && e.shift_x == shift_x &&
+         e.shift_y == shift_y && e.viscous == m.viscous;
+}
+
+std::optional<Kernel> KernelLibrary::cut_kept(Component c, const Grid& grid,
+                                              const CombinedMaterial& m, double shift_x,
+                                              double shift_y, Grid& big) {
+  big = grid;
   for (auto it = entries_.begin(); it != entries_.end(); ++it) {
     const Entry& e = *it;
-    if (e.c != c || e.dx != grid.dx || e.dy != grid.dy || e.g != m.g || e.nu != m.nu ||
-        e.k != m.k || e.layer != m.layer_compliance ||
-        e.normal_layer != m.normal_layer_compliance || e.shift_x != shift_x ||
-        e.shift_y != shift_y || e.viscous != m.viscous)
-      continue;
+    if (!matches(e, c, grid, m, shift_x, shift_y)) continue;
     if (e.kernel.mx() >= grid.mx && e.kernel.my() >= grid.my) {
       entries_.splice(entries_.begin(), entries_, it);
       return cut_kernel(entries_.front().kernel, grid.mx, grid.my);
     }
+    // A grid that outgrew its kernel is a growing patch: a quarter more than asked in each
+    // direction, so that it does not tabulate again at every step. A first request gets its
+    // own size: most grids never grow (a module-3 sequence), and the closed forms are the
+    // set-up.
+    big.mx = std::max(grid.mx + (grid.mx + 3) / 4, e.kernel.mx());
+    big.my = std::max(grid.my + (grid.my + 3) / 4, e.kernel.my());
     kept_bytes_ -= bytes_of(it->kernel);
-    entries_.erase(it);  // too small: replaced by a larger one below
+    entries_.erase(it);  // too small: replaced by a larger one
     break;
   }
-  // A quarter more than asked in each direction, so that slowly growing patches do not
-  // tabulate again at every step.
-  Grid big = grid;
-  big.mx = grid.mx + (grid.mx + 3) / 4;
-  big.my = grid.my + (grid.my + 3) / 4;
-  ++computed_;
-  if (4 * bytes_for(big.mx, big.my) > budget_bytes_)
-    return make_kernel(c, grid, m, shift_x, shift_y);
-  entries_.push_front({c, grid.dx, grid.dy, m.g, m.nu, m.k, m.layer_compliance,
-                       m.normal_layer_compliance, shift_x, shift_y, m.viscous,
-                       make_kernel(c, big, m, shift_x, shift_y)});
-  kept_bytes_ += bytes_of(entries_.front().kernel);
-  while (kept_bytes_ > budget_bytes_) {
+  return std::nullopt;
+}
+
+std::vector<Kernel> KernelLibrary::kernels(const std::vector<Component>& cs, const Grid& grid,
+                                           const CombinedMaterial& m, double shift_x,
+                                           double shift_y) {
+  // The quadrature of a viscous part follows the grid's length (its kinks), so a kernel cut from
+  // a larger grid's would differ in the last digits: viscoelastic kernels are made directly.
+  if (m.viscoelastic()) {
+    computed_ += cs.size();
+    return make_kernels(cs, grid, m, shift_x, shift_y);
+  }
+  std::vector<std::optional<Kernel>> out(cs.size());
+  // Missing components, grouped by the size they are tabulated at (usually one group): each
+  // group on one corner lattice.
+  struct Group {
+    Grid size;
+    bool keep;
+    std::vector<std::size_t> members;
+  };
+  std::vector<Group> groups;
+  for (std::size_t q = 0; q < cs.size(); ++q) {
+    Grid big;
+    out[q] = cut_kept(cs[q], grid, m, shift_x, shift_y, big);
+    if (out[q]) continue;
+    // Kept only while a quarter of the budget holds it with the margin of a growing patch:
+    // large module-3 grids build their operators once, and their kernels would only double the
+    // memory. Those are made at their own size and not kept.
+    const int margin_mx = std::max(big.mx, grid.mx + (grid.mx + 3) / 4);
+    const int margin_my = std::max(big.my, grid.my + (grid.my + 3) / 4);
+    const bool keep = 4 * bytes_for(margin_mx, margin_my) <= budget_bytes_;
+    if (!keep) big = grid;
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) {
+      return x.size.mx == big.mx && x.size.my == big.my && x.keep == keep;
+    });
+    if (g == groups.end()) g = groups.insert(groups.end(), Group{big, keep, {}});
+    g->members.push_back(q);
+  }
+  for (const Group& group : groups) {
+    std::vector<Component> comps;
+    for (std::size_t q : group.members) comps.push_back(cs[q]);
+    std::vector<Kernel> made = make_kernels(comps, group.size, m, shift_x, shift_y);
+    computed_ += comps.size();
+    for (std::size_t k = 0; k < group.members.size(); ++k) {
+      const std::size_t q = group.members[k];
+      if (!group.keep) {
+        out[q] = std::move(made[k]);
+        continue;
+      }
+      out[q] = cut_kernel(made[k], grid.mx, grid.my);
+      entries_.push_front({cs[q], grid.dx, grid.dy, m.g, m.nu, m.k, m.layer_compliance,
+                           m.normal_layer_compliance, shift_x, shift_y, m.viscous,
+                           std::move(made[k])});
+      kept_bytes_ += bytes_of(entries_.front().kernel);
+    }
+  }
+  while (kept_bytes_ > budget_bytes_ && !entries_.empty()) {
     kept_bytes_ -= bytes_of(entries_.back().kernel);
     entries_.pop_back();
   }
-  return cut_kernel(entries_.front().kernel, grid.mx, grid.my);
+  std::vector<Kernel> result;
+  result.reserve(cs.size());
+  for (auto& k : out) result.push_back(std::move(*k));
+  return result;
 }
 
 }  // namespace rollcontact::elastic

@@ -5,10 +5,13 @@
 // corner abscissae, the same operations). Wheel/rail patches change their MX, MY from case to
 // case and within the vertical-force iteration; cutting the kernel out of a kept larger one
 // replaces the closed forms (logarithms in long double, most of the set-up time) by a copy.
+// A kernel is tabulated at the grid's own size first and with a margin once a grid outgrew it.
 
 #include <array>
 #include <cstddef>
 #include <list>
+#include <optional>
+#include <vector>
 
 #include "elastic/influence.hpp"
 
@@ -25,6 +28,11 @@ class KernelLibrary {
   /// Equal to make_kernel(c, grid, material, shift_x, shift_y).
   Kernel kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                 double shift_x = 0.0, double shift_y = 0.0);
+  /// Equal to make_kernels(cs, …): the components not kept are tabulated together (shared
+  /// logarithms, elastic/influence.hpp).
+  std::vector<Kernel> kernels(const std::vector<Component>& cs, const Grid& grid,
+                              const CombinedMaterial& material, double shift_x = 0.0,
+                              double shift_y = 0.0);
 
   std::size_t computed() const noexcept { return computed_; }  ///< closed-form tabulations
 
@@ -35,6 +43,13 @@ class KernelLibrary {
     std::array<ViscousCompliance, 2> viscous;
     Kernel kernel;
   };
+  static bool matches(const Entry& e, Component c, const Grid& grid, const CombinedMaterial& m,
+                      double shift_x, double shift_y);
+  /// The kept kernel cut to `grid`, or none; then `big` is the size to tabulate at (the grid's
+  /// own, or with a margin when the grid outgrew a kept kernel, which is dropped).
+  std::optional<Kernel> cut_kept(Component c, const Grid& grid, const CombinedMaterial& m,
+                                 double shift_x, double shift_y, Grid& big);
+
   std::size_t budget_bytes_, kept_bytes_ = 0;
   std::list<Entry> entries_;  ///< most recently used first
   std::size_t computed_ = 0;

@@ -57,19 +57,21 @@ CirculantPreconditioner::CirculantPreconditioner(const Grid& grid, const Combine
   std::vector<std::complex<double>> inverse_symbol(engine_->spectrum_size());
   for (std::size_t k = 0; k < inverse_symbol.size(); ++k)
     inverse_symbol[k] = scale / std::max(spectrum[k].real(), floor);
-  engine_->set_convolution_symbol(inverse_symbol.data());
-  // One pass through the row-pruned transforms makes the engine plan them now, not in apply().
-  std::fill_n(work, engine_->real_size(), 0.0);
-  engine_->execute_convolution(my_, my_);
   // Where the backend has one, apply in single precision: an approximate inverse needs no more
   // than a few digits (CG iteration counts unchanged), and the transforms are ≈ 30 % cheaper.
+  // The double engine then only made the symbol: no convolution plans for it.
   single_ = core::make_single_circulant(backend, nx_, ny_, planning);
   if (single_) {
     std::vector<double> real_symbol(inverse_symbol.size());
     for (std::size_t k = 0; k < real_symbol.size(); ++k) real_symbol[k] = inverse_symbol[k].real();
     single_->set_symbol(real_symbol.data());
     engine_.reset();  // not needed any more
+    return;
   }
+  engine_->set_convolution_symbol(inverse_symbol.data());
+  // The row-pruned transforms are planned now, not in apply().
+  std::fill_n(work, engine_->real_size(), 0.0);
+  engine_->prepare_transforms(my_, my_);
 }
 
 void CirculantPreconditioner::convolve(const double* r) {

@@ -16,6 +16,23 @@ Kernel tabulate(KernelLibrary* library, Component c, const Grid& grid,
                             : make_kernel(c, grid, material, shift_x, shift_y);
 }
 
+/// Several components at once: those not kept are tabulated on one corner lattice.
+std::vector<Kernel> tabulate(KernelLibrary* library, const std::vector<Component>& cs,
+                             const Grid& grid, const CombinedMaterial& material,
+                             double shift_x = 0.0, double shift_y = 0.0) {
+  return library != nullptr ? library->kernels(cs, grid, material, shift_x, shift_y)
+                            : make_kernels(cs, grid, material, shift_x, shift_y);
+}
+
+/// xx, xy, yy and, when coupled, xn, yn at the shift.
+std::vector<Kernel> tangential_kernels(KernelLibrary* library, const Grid& grid,
+                                       const CombinedMaterial& material, bool coupled,
+                                       double shift_x, double shift_y) {
+  std::vector<Component> cs{Component::xx, Component::xy, Component::yy};
+  if (coupled) cs.insert(cs.end(), {Component::xn, Component::yn});
+  return tabulate(library, cs, grid, material, shift_x, shift_y);
+}
+
 }  // namespace
 
 void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMaterial& material,
@@ -31,20 +48,24 @@ void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMat
 namespace {
 
 /// The plain 3×3 C (zero couplings when K = 0) and the normal displacement due to p_t.
-void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, KernelLibrary* lib) {
+void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, KernelLibrary* lib,
+                    SpectrumCache& spectra) {
   const Grid& grid = s.grid;
   const CombinedMaterial& material = s.material;
-  s.c_xx = tabulate(lib, Component::xx, grid, material);
-  s.c_xy = tabulate(lib, Component::xy, grid, material);
-  s.c_yy = tabulate(lib, Component::yy, grid, material);
-  s.c_nn = tabulate(lib, Component::nn, grid, material);
+  std::vector<Component> cs{Component::xx, Component::xy, Component::yy, Component::nn};
+  if (coupled) cs.insert(cs.end(), {Component::xn, Component::yn, Component::nx, Component::ny});
+  std::vector<Kernel> k = tabulate(lib, cs, grid, material);
+  s.c_xx = std::move(k[0]);
+  s.c_xy = std::move(k[1]);
+  s.c_yy = std::move(k[2]);
+  s.c_nn = std::move(k[3]);
   if (coupled) {
-    s.c_xn = tabulate(lib, Component::xn, grid, material);
-    s.c_yn = tabulate(lib, Component::yn, grid, material);
-    s.nt_x = tabulate(lib, Component::nx, grid, material);
-    s.nt_y = tabulate(lib, Component::ny, grid, material);
+    s.c_xn = std::move(k[4]);
+    s.c_yn = std::move(k[5]);
+    s.nt_x = std::move(k[6]);
+    s.nt_y = std::move(k[7]);
     s.nt = std::make_unique<BlockConvolution>(1, 2, std::vector<const Kernel*>{&s.nt_x, &s.nt_y},
-                                              fft.backend, fft.planning);
+                                              fft.backend, fft.planning, &spectra);
   }
   const Kernel* xn = coupled ? &s.c_xn : nullptr;
   const Kernel* yn = coupled ? &s.c_yn : nullptr;
@@ -52,25 +73,26 @@ void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, Kerne
   const Kernel* ny = coupled ? &s.nt_y : nullptr;
   s.full = std::make_unique<BlockConvolution>(
       3, 3, std::vector<const Kernel*>{&s.c_xx, &s.c_xy, xn, &s.c_xy, &s.c_yy, yn, nx, ny, &s.c_nn},
-      fft.backend, fft.planning);
+      fft.backend, fft.planning, &spectra);
 }
 
 /// Steady rolling: A = C − C′ with C′ the coefficients seen from one step downstream.
 void assemble_steady_part(TangentialOperatorSet& s, bool coupled, KernelLibrary* lib) {
-  const double sx = s.shift_x, sy = s.shift_y;
-  s.xx = difference(s.c_xx, tabulate(lib, Component::xx, s.grid, s.material, sx, sy));
-  s.xy = difference(s.c_xy, tabulate(lib, Component::xy, s.grid, s.material, sx, sy));
-  s.yy = difference(s.c_yy, tabulate(lib, Component::yy, s.grid, s.material, sx, sy));
+  const std::vector<Kernel> k =
+      tangential_kernels(lib, s.grid, s.material, coupled, s.shift_x, s.shift_y);
+  s.xx = difference(s.c_xx, k[0]);
+  s.xy = difference(s.c_xy, k[1]);
+  s.yy = difference(s.c_yy, k[2]);
   if (coupled) {
-    s.tn_x = difference(s.c_xn, tabulate(lib, Component::xn, s.grid, s.material, sx, sy));
-    s.tn_y = difference(s.c_yn, tabulate(lib, Component::yn, s.grid, s.material, sx, sy));
+    s.tn_x = difference(s.c_xn, k[3]);
+    s.tn_y = difference(s.c_yn, k[4]);
   }
 }
 
 /// Shift and transient rolling: A = C, and the previous-time displacement of the particles now
 /// at the element centres (C′ when rolling, C for a shift).
 void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice fft,
-                             KernelLibrary* lib) {
+                             KernelLibrary* lib, SpectrumCache& spectra) {
   const bool rolling = s.kind == model::TangentialKind::TransientRolling;
   const double sx = s.shift_x, sy = s.shift_y;
   s.xx = s.c_xx;
@@ -80,18 +102,20 @@ void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice f
     s.tn_x = s.c_xn;
     s.tn_y = s.c_yn;
   }
-  s.prev_xx = rolling ? tabulate(lib, Component::xx, s.grid, s.material, sx, sy) : s.xx;
-  s.prev_xy = rolling ? tabulate(lib, Component::xy, s.grid, s.material, sx, sy) : s.xy;
-  s.prev_yy = rolling ? tabulate(lib, Component::yy, s.grid, s.material, sx, sy) : s.yy;
+  std::vector<Kernel> k;
+  if (rolling) k = tangential_kernels(lib, s.grid, s.material, coupled, sx, sy);
+  s.prev_xx = rolling ? std::move(k[0]) : s.xx;
+  s.prev_xy = rolling ? std::move(k[1]) : s.xy;
+  s.prev_yy = rolling ? std::move(k[2]) : s.yy;
   if (coupled) {
-    s.prev_xn = rolling ? tabulate(lib, Component::xn, s.grid, s.material, sx, sy) : s.c_xn;
-    s.prev_yn = rolling ? tabulate(lib, Component::yn, s.grid, s.material, sx, sy) : s.c_yn;
+    s.prev_xn = rolling ? std::move(k[3]) : s.c_xn;
+    s.prev_yn = rolling ? std::move(k[4]) : s.c_yn;
   }
   s.prev = std::make_unique<BlockConvolution>(
       2, 3,
       std::vector<const Kernel*>{&s.prev_xx, &s.prev_xy, coupled ? &s.prev_xn : nullptr, &s.prev_xy,
                                  &s.prev_yy, coupled ? &s.prev_yn : nullptr},
-      fft.backend, fft.planning);
+      fft.backend, fft.planning, &spectra);
 }
 
 }  // namespace
@@ -115,17 +139,21 @@ void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
   set.shift_x = key.shift_x;
   set.shift_y = key.shift_y;
   const bool coupled = is_coupled(material);
-  assemble_plain(set, coupled, fft, lib);
+  // The products share their kernels' spectra: for shifts and transient rolling A is C, and
+  // the previous displacement of a shift is C again.
+  SpectrumCache spectra;
+  assemble_plain(set, coupled, fft, lib, spectra);
   if (set.steady())
     assemble_steady_part(set, coupled, lib);
   else
-    assemble_transient_part(set, coupled, fft, lib);
+    assemble_transient_part(set, coupled, fft, lib, spectra);
   set.a = std::make_unique<BlockConvolution>(
       2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.xy, &set.yy}, fft.backend,
-      fft.planning);
+      fft.planning, &spectra);
   if (coupled)
-    set.tn = std::make_unique<BlockConvolution>(
-        2, 1, std::vector<const Kernel*>{&set.tn_x, &set.tn_y}, fft.backend, fft.planning);
+    set.tn =
+        std::make_unique<BlockConvolution>(2, 1, std::vector<const Kernel*>{&set.tn_x, &set.tn_y},
+                                           fft.backend, fft.planning, &spectra);
   set.interaction = std::move(interaction);
   for (BlockConvolution* product :
        {set.a.get(), set.prev.get(), set.tn.get(), set.nt.get(), set.full.get()})
@@ -139,15 +167,15 @@ void assemble_steady_rolling(SteadyRollingOperatorSet& set, const Grid& grid,
   set.material = material;
   set.shift_x = shift_x_mm;
   set.shift_y = shift_y_mm;
-  set.c_xx = tabulate(lib, Component::xx, grid, material);
-  set.c_xy = tabulate(lib, Component::xy, grid, material);
-  set.c_yy = tabulate(lib, Component::yy, grid, material);
-  set.xx =
-      difference(set.c_xx, tabulate(lib, Component::xx, grid, material, shift_x_mm, shift_y_mm));
-  set.xy =
-      difference(set.c_xy, tabulate(lib, Component::xy, grid, material, shift_x_mm, shift_y_mm));
-  set.yy =
-      difference(set.c_yy, tabulate(lib, Component::yy, grid, material, shift_x_mm, shift_y_mm));
+  std::vector<Kernel> c = tangential_kernels(lib, grid, material, false, 0.0, 0.0);
+  set.c_xx = std::move(c[0]);
+  set.c_xy = std::move(c[1]);
+  set.c_yy = std::move(c[2]);
+  const std::vector<Kernel> shifted =
+      tangential_kernels(lib, grid, material, false, shift_x_mm, shift_y_mm);
+  set.xx = difference(set.c_xx, shifted[0]);
+  set.xy = difference(set.c_xy, shifted[1]);
+  set.yy = difference(set.c_yy, shifted[2]);
   set.a = std::make_unique<BlockConvolution>(
       2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.xy, &set.yy}, fft.backend,
       fft.planning);

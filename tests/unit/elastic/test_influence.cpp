@@ -289,6 +289,43 @@ TEST(MakeKernel, AgreesWithCoefficientsDividedByG) {
   }
 }
 
+TEST(MakeKernel, SharingMirroredCornersChangesNoBit) {
+  // The tabulation shares r and the logarithms between mirrored corners; the kernels must be
+  // those of the corner function evaluated at every corner, bit for bit: square, elongated and
+  // strip elements, with and without rolling shifts, odd and even grids, all components.
+  const CombinedMaterial m{.g = 82000.0, .nu = 0.28, .k = 0.07};
+  struct Case {
+    int mx, my;
+    double dx, dy, sx, sy;
+  };
+  const Case cases[] = {{9, 11, 0.1, 0.1, 0.0, 0.0},     {12, 7, 0.2, 0.05, 0.0, 0.0},
+                        {8, 8, 0.1, 0.1, 0.1, 0.0},      {10, 9, 0.1, 0.1, 0.0, 0.03},
+                        {7, 6, 0.1, 0.3, 0.05, 0.02},    {20, 1, 0.001, 1000.0, 0.0, 0.0},
+                        {16, 1, 0.04, 200.0, 0.01, 0.0}, {1, 1, 0.1, 0.1, 0.0, 0.0}};
+  for (const Case& k : cases)
+    for (Component c : {Component::nn, Component::xx, Component::yy, Component::xy, Component::yx,
+                        Component::xn, Component::yn, Component::nx, Component::ny}) {
+      const Grid grid{.mx = k.mx, .my = k.my, .xl = 0, .yl = 0, .dx = k.dx, .dy = k.dy};
+      const Kernel shared = make_kernel(c, grid, m, k.sx, k.sy);
+      const Kernel plain = make_unshared_kernel(c, grid, m, k.sx, k.sy);
+      EXPECT_EQ(shared.data(), plain.data())
+          << static_cast<int>(c) << " " << k.mx << "x" << k.my << " dx " << k.dx << " dy " << k.dy
+          << " shift " << k.sx << "," << k.sy;
+    }
+  // Several components on one lattice (shared logarithms), couplings in between.
+  const std::vector<Component> cs{Component::xx, Component::xn, Component::xy, Component::yy,
+                                  Component::nn, Component::ny, Component::yx};
+  for (const Case& k : cases) {
+    const Grid grid{.mx = k.mx, .my = k.my, .xl = 0, .yl = 0, .dx = k.dx, .dy = k.dy};
+    const std::vector<Kernel> together = make_kernels(cs, grid, m, k.sx, k.sy);
+    ASSERT_EQ(together.size(), cs.size());
+    for (std::size_t q = 0; q < cs.size(); ++q)
+      EXPECT_EQ(together[q].data(), make_unshared_kernel(cs[q], grid, m, k.sx, k.sy).data())
+          << static_cast<int>(cs[q]) << " " << k.mx << "x" << k.my << " shift " << k.sx << ","
+          << k.sy;
+  }
+}
+
 TEST(MakeKernel, StripKernelMatchesReference) {
   // bentall-like strip: 216 × 1 elements of 0.001 × 1000 mm, G = 35924.
   const Grid grid{.mx = 216, .my = 1, .xl = -0.108, .yl = -500.0, .dx = 0.001, .dy = 1000.0};

@@ -29,20 +29,37 @@ TEST(KernelLibrary, CutKernelsEqualTabulatedOnesExactly) {
   }
 }
 
+TEST(KernelLibrary, SeveralComponentsAtOnceEqualTheirKernels) {
+  const CombinedMaterial m{.g = 82000.0, .nu = 0.28, .k = 0.03};
+  KernelLibrary lib;
+  lib.kernel(Component::nn, grid(12, 10), m);  // kept: cut, the others tabulated together
+  const std::vector<Component> cs{Component::xx, Component::nn, Component::xn, Component::yy};
+  for (auto [mx, my] : {std::pair{12, 10}, std::pair{14, 9}, std::pair{5, 5}}) {
+    const std::vector<Kernel> k = lib.kernels(cs, grid(mx, my), m, 0.2, 0.0);
+    for (std::size_t q = 0; q < cs.size(); ++q)
+      EXPECT_EQ(k[q].data(), make_kernel(cs[q], grid(mx, my), m, 0.2, 0.0).data())
+          << static_cast<int>(cs[q]) << " " << mx << "x" << my;
+  }
+}
+
 TEST(KernelLibrary, TabulatesOnlyWhenAGridOutgrowsTheKeptKernel) {
   const CombinedMaterial m{.g = 1.0, .nu = 0.3, .k = 0.0};
   KernelLibrary lib;
-  lib.kernel(Component::nn, grid(16, 16), m);  // keeps 20 × 20
+  lib.kernel(Component::nn, grid(16, 16), m);  // keeps 16 × 16: its own size first
   EXPECT_EQ(lib.computed(), 1u);
-  lib.kernel(Component::nn, grid(20, 8), m);  // inside: cut
+  lib.kernel(Component::nn, grid(16, 8), m);  // inside: cut
   lib.kernel(Component::nn, grid(4, 4), m);
   EXPECT_EQ(lib.computed(), 1u);
-  lib.kernel(Component::nn, grid(21, 8), m);  // outgrows in x
+  lib.kernel(Component::nn, grid(17, 8), m);  // outgrows in x: keeps 22 × 16 (a margin)
   EXPECT_EQ(lib.computed(), 2u);
+  lib.kernel(Component::nn, grid(22, 16), m);  // inside the margin: cut
+  EXPECT_EQ(lib.computed(), 2u);
+  lib.kernel(Component::nn, grid(23, 8), m);  // outgrows again
+  EXPECT_EQ(lib.computed(), 3u);
   lib.kernel(Component::yy, grid(4, 4), m);  // another component, element size or material
   lib.kernel(Component::nn, {.mx = 4, .my = 4, .xl = 0, .yl = 0, .dx = 0.1, .dy = 0.25}, m);
   lib.kernel(Component::nn, grid(4, 4), {.g = 2.0, .nu = 0.3, .k = 0.0});
-  EXPECT_EQ(lib.computed(), 5u);
+  EXPECT_EQ(lib.computed(), 6u);
   // A budget too small to keep anything: every request tabulates, results unchanged.
   KernelLibrary none(16);
   none.kernel(Component::nn, grid(8, 8), m);
