@@ -243,6 +243,32 @@ bool steady_coarse_start(PatchSolver::Impl& st, int level, const tangential::Tan
   return true;
 }
 
+/// What a tangential solution reports per contact element: the relative slip S/δq (S per
+/// step; T=1: δq = 1, a distance), 0 in Plastic elements, which do not slide, and there the
+/// layer's flow |Δu_pl| = |−S| (plastic_flow empty when nothing flowed).
+struct ReportedSlip {
+  Field sx, sy;
+  Field plastic_flow;
+};
+
+ReportedSlip reported_slip(const tangential::TangentialResult& t, const Field& pn, double dq) {
+  const std::size_t n = pn.size();
+  ReportedSlip r;
+  r.sx.assign(n, 0.0);
+  r.sy.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (pn[i] <= 0.0) continue;
+    if (t.state[i] == ElementState::Plastic) {
+      if (r.plastic_flow.empty()) r.plastic_flow.assign(n, 0.0);
+      r.plastic_flow[i] = std::hypot(t.sx[i], t.sy[i]);
+      continue;
+    }
+    r.sx[i] = t.sx[i] / dq;
+    r.sy[i] = t.sy[i] / dq;
+  }
+  return r;
+}
+
 /// Everything the normal and tangential sub-solves of one case share.
 class CaseSolver {
  public:
@@ -284,8 +310,15 @@ class CaseSolver {
                                                            const Field& px, const Field& py);
   /// Body 1's surface temperature [°C] that the tangential solution `t` produces (§15).
   Field body1_temperature(const tangential::TangentialResult& t) const;
-  /// What solve_velocity_dependent and solve_temperature_dependent share: memory of §10.2.
+  /// What solve_velocity_dependent and solve_temperature_dependent share: memory of §10.2,
+  /// the tangential solve of one pass (started from the previous pass's tractions, which
+  /// start_x, start_y carry) and taking over the last pass as the case's result.
   contact::FrictionMemoryInput friction_memory(const std::vector<char>& contact) const;
+  contact::TangentialSolveWithFriction warm_started_solve(double cksi, double ceta, double cphi,
+                                                          Field& start_x, Field& start_y);
+  tangential::TangentialResult adopt_friction_iteration(contact::FrictionIterationOutcome& r);
+  /// 1 for the elements in contact (p_n > 0).
+  std::vector<char> contact_set() const;
   void assemble_slip_at_zero_traction(tangential::TangentialSystem& sys, double cksi, double ceta,
                                       double cphi);
   void add_unshifted_displacement(const Field& px, const Field& py, const Field& pn, Field& ux,
@@ -558,6 +591,38 @@ void CaseSolver::assemble_slip_at_zero_traction(tangential::TangentialSystem& sy
   }
 }
 
+std::vector<char> CaseSolver::contact_set() const {
+  std::vector<char> contact(grid_.size(), 0);
+  for (std::size_t i = 0; i < contact.size(); ++i) contact[i] = sol_.pn[i] > 0.0;
+  return contact;
+}
+
+contact::TangentialSolveWithFriction CaseSolver::warm_started_solve(double cksi, double ceta,
+                                                                    double cphi, Field& start_x,
+                                                                    Field& start_y) {
+  return [this, cksi, ceta, cphi, &start_x, &start_y](const Field& mu) {
+    tangential::TangentialResult t = solve_tangential(cksi, ceta, cphi, &start_x, &start_y, &mu);
+    sol_.solver.tangential_iterations += t.iterations;
+    start_x = t.px;
+    start_y = t.py;
+    return t;
+  };
+}
+
+tangential::TangentialResult CaseSolver::adopt_friction_iteration(
+    contact::FrictionIterationOutcome& r) {
+  sol_.solver.slip_velocity_passes += r.passes;
+  sol_.solver.slip_velocity_trace = std::move(r.trace);
+  mu_ = std::move(r.mu);
+  tangential::TangentialResult tang = std::move(r.tangential);
+  tang.iterations = 0;  // counted per pass by warm_started_solve
+  if (!r.converged && tang.converged) {
+    tang.converged = false;
+    tang.message = r.message;
+  }
+  return tang;
+}
+
 contact::FrictionMemoryInput CaseSolver::friction_memory(const std::vector<char>& contact) const {
   contact::FrictionMemoryInput memory;
   memory.grid = &grid_;
@@ -577,8 +642,7 @@ tangential::TangentialResult CaseSolver::solve_velocity_dependent(double cksi, d
                                                                   const Field& py) {
   const std::size_t n = grid_.size();
   const EffectiveKinematics& k = sol_.kinematics;
-  std::vector<char> contact(n, 0);
-  for (std::size_t i = 0; i < n; ++i) contact[i] = sol_.pn[i] > 0.0;
+  const std::vector<char> contact = contact_set();
   const contact::FrictionMemoryInput memory = friction_memory(contact);
 
   Field speed(n, 0.0);
@@ -598,29 +662,12 @@ tangential::TangentialResult CaseSolver::solve_velocity_dependent(double cksi, d
   settings.relaxation = problem_.solver.slip_velocity_relaxation;
   settings.max_passes = problem_.solver.max_slip_velocity_passes;
   Field start_x = px, start_y = py;
-  contact::SlipVelocityOutcome r =
-      contact::solve_with_slip_velocity(memory, speed, settings, [&](const Field& mu) {
-        tangential::TangentialResult t =
-            solve_tangential(cksi, ceta, cphi, &start_x, &start_y, &mu);
-        sol_.solver.tangential_iterations += t.iterations;
-        start_x = t.px;
-        start_y = t.py;
-        return t;
-      });
-  sol_.solver.slip_velocity_passes += r.passes;
-  sol_.solver.slip_velocity_trace = std::move(r.trace);
-  mu_ = std::move(r.mu);
-  tangential::TangentialResult tang = std::move(r.tangential);
-  tang.iterations = 0;  // counted per pass above
-  if (!r.converged && tang.converged) {
-    tang.converged = false;
-    tang.message = r.message;
-  }
-  return tang;
+  contact::SlipVelocityOutcome r = contact::solve_with_slip_velocity(
+      memory, speed, settings, warm_started_solve(cksi, ceta, cphi, start_x, start_y));
+  return adopt_friction_iteration(r);
 }
 
 Field CaseSolver::body1_temperature(const tangential::TangentialResult& t) const {
-  const std::size_t n = grid_.size();
   Solution s;  // the fields §15 reads, from the provisional tangential solution
   s.grid = grid_;
   s.pn = sol_.pn;
@@ -628,27 +675,17 @@ Field CaseSolver::body1_temperature(const tangential::TangentialResult& t) const
   s.py = t.py;
   s.state = t.state;
   s.kinematics = sol_.kinematics;
-  s.sx.assign(n, 0.0);
-  s.sy.assign(n, 0.0);
-  Field flow;  // |Δu_pl| of Plastic elements, which do not slide (compute_totals)
-  for (std::size_t i = 0; i < n; ++i) {
-    if (t.state[i] == ElementState::Plastic) {
-      if (flow.empty()) flow.assign(n, 0.0);
-      flow[i] = std::hypot(t.sx[i], t.sy[i]);
-      continue;
-    }
-    s.sx[i] = t.sx[i] / s.kinematics.dq;
-    s.sy[i] = t.sy[i] / s.kinematics.dq;
-  }
-  return post::surface_temperatures(problem_.heat, s, true, flow).temp1;
+  ReportedSlip slip = reported_slip(t, sol_.pn, s.kinematics.dq);
+  s.sx = std::move(slip.sx);
+  s.sy = std::move(slip.sy);
+  return post::surface_temperatures(problem_.heat, s, true, slip.plastic_flow).temp1;
 }
 
 tangential::TangentialResult CaseSolver::solve_temperature_dependent(double cksi, double ceta,
                                                                      double cphi, const Field& px,
                                                                      const Field& py) {
   const std::size_t n = grid_.size();
-  std::vector<char> contact(n, 0);
-  for (std::size_t i = 0; i < n; ++i) contact[i] = sol_.pn[i] > 0.0;
+  const std::vector<char> contact = contact_set();
   // Start from the temperatures without frictional heat (bulk, and the contact temperature in
   // the contact): a solution with every element adhering.
   tangential::TangentialResult cold;
@@ -665,25 +702,9 @@ tangential::TangentialResult CaseSolver::solve_temperature_dependent(double cksi
   Field start_x = px, start_y = py;
   contact::TemperatureIterationOutcome r = contact::solve_with_temperature(
       friction_memory(contact), body1_temperature(cold), settings,
-      [&](const Field& mu) {
-        tangential::TangentialResult t =
-            solve_tangential(cksi, ceta, cphi, &start_x, &start_y, &mu);
-        sol_.solver.tangential_iterations += t.iterations;
-        start_x = t.px;
-        start_y = t.py;
-        return t;
-      },
+      warm_started_solve(cksi, ceta, cphi, start_x, start_y),
       [&](const tangential::TangentialResult& t) { return body1_temperature(t); });
-  sol_.solver.slip_velocity_passes += r.passes;
-  sol_.solver.slip_velocity_trace = std::move(r.trace);
-  mu_ = std::move(r.mu);
-  tangential::TangentialResult tang = std::move(r.tangential);
-  tang.iterations = 0;  // counted per pass above
-  if (!r.converged && tang.converged) {
-    tang.converged = false;
-    tang.message = r.message;
-  }
-  return tang;
+  return adopt_friction_iteration(r);
 }
 
 tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ceta, double cphi,
@@ -695,8 +716,7 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
   sys.grid = grid_;
   sys.chi = sol_.kinematics.chi;
   sys.a = tops_->view();
-  sys.contact.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) sys.contact[i] = sol_.pn[i] > 0.0;
+  sys.contact = contact_set();
   if (mu != nullptr) {
     sys.bound.assign(n, 0.0);
     for (std::size_t i = 0; i < n; ++i)
@@ -948,12 +968,19 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   const double area = grid_.element_area();
   Solution& s = sol_;
   s.px = tang ? tang->px : Field(n, 0.0);
+  s.py = tang ? tang->py : Field(n, 0.0);
   s.mu = mu_;
   if (layer_plastic_ && tang != nullptr)
     contact::record_plastic_state(problem_.bodies.layer, plastic_history_, *tang, s);
-  s.py = tang ? tang->py : Field(n, 0.0);
-  s.sx.assign(n, 0.0);
-  s.sy.assign(n, 0.0);
+  if (tang != nullptr) {
+    ReportedSlip slip = reported_slip(*tang, s.pn, s.kinematics.dq);
+    s.sx = std::move(slip.sx);
+    s.sy = std::move(slip.sy);
+    plastic_flow_ = std::move(slip.plastic_flow);
+  } else {
+    s.sx.assign(n, 0.0);
+    s.sy.assign(n, 0.0);
+  }
   s.state.assign(n, ElementState::Exterior);
   s.ux.assign(n, 0.0);
   s.uy.assign(n, 0.0);
@@ -980,7 +1007,6 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   st.npot = static_cast<int>(n);
   double energy = 0.0, power = 0.0;
   t.fn = t.fx = t.fy = t.mz = t.pmax = 0.0;
-  const double dq = s.kinematics.dq;
   for (int iy = 0; iy < grid_.my; ++iy) {
     for (int ix = 0; ix < grid_.mx; ++ix) {
       const std::size_t i = grid_.index(ix, iy);
@@ -994,16 +1020,8 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
       t.pmax = std::max(t.pmax, s.pn[i]);
       if (tang) {
         s.state[i] = tang->state[i];
-        // S per step [mm]; reported as relative slip S/δq (T=1: δq = 1, a distance).
-        // (Plastic elements: the work of the layer's flow −S; they do not slide.)
+        // S per step [mm] (Plastic elements: the work of the layer's flow −S).
         power += tang->sx[i] * s.px[i] + tang->sy[i] * s.py[i];
-        if (tang->state[i] != ElementState::Plastic) {
-          s.sx[i] = tang->sx[i] / dq;
-          s.sy[i] = tang->sy[i] / dq;
-        } else {
-          if (plastic_flow_.empty()) plastic_flow_.assign(n, 0.0);
-          plastic_flow_[i] = std::hypot(tang->sx[i], tang->sy[i]);  // |Δu_pl| = |−S|
-        }
       } else {
         s.state[i] = ElementState::Adhesion;  // CONTACT prints '*' without a tangential problem
       }

@@ -52,7 +52,9 @@ struct SlipVelocitySettings {
   int max_passes = 90;      ///< max(1, MAXIN − 10)
 };
 
-struct SlipVelocityOutcome {
+/// What a fixed point of solution-dependent friction (slip velocity here, temperature in
+/// temperature_iteration.hpp) gives: its last tangential solution and how it got there.
+struct FrictionIterationOutcome {
   tangential::TangentialResult tangential;  ///< the last pass's solution
   Field mu;                                 ///< μ per element used in it
   int passes = 0;
@@ -60,6 +62,8 @@ struct SlipVelocityOutcome {
   std::string message;             ///< why not converged
   std::vector<std::string> trace;  ///< one line per pass, as CONTACT's "Vel-dep" lines
 };
+
+using SlipVelocityOutcome = FrictionIterationOutcome;
 
 /// Solves the tangential problem for the friction field `mu` (bound μ_I·p_n,I).
 using TangentialSolveWithFriction = std::function<tangential::TangentialResult(const Field& mu)>;

@@ -23,14 +23,8 @@ struct TemperatureIterationSettings {
   int reduction_period = 15;  ///< passes between reductions of ω
 };
 
-struct TemperatureIterationOutcome {
-  tangential::TangentialResult tangential;  ///< the last pass's solution
-  Field mu;                                 ///< μ per element used in it
-  Field temperature_C;                      ///< body 1's surface temperature it produced
-  int passes = 0;
-  bool converged = false;
-  std::string message;             ///< why not converged
-  std::vector<std::string> trace;  ///< one line per pass
+struct TemperatureIterationOutcome : FrictionIterationOutcome {
+  Field temperature_C;  ///< body 1's surface temperature the last pass produced
 };
 
 /// Body 1's surface temperature per element [°C] that a tangential solution produces.
