@@ -77,6 +77,16 @@ FrictionField friction_with_memory(const FrictionMemoryInput& in, const Field& s
   return f;
 }
 
+bool record_pass(FrictionIterationOutcome& out, int pass, Field mu,
+                 tangential::TangentialResult tangential) {
+  out.passes = pass;
+  out.mu = std::move(mu);
+  out.tangential = std::move(tangential);
+  if (out.tangential.converged) return true;
+  out.message = out.tangential.message;
+  return false;
+}
+
 SlipVelocityOutcome solve_with_slip_velocity(const FrictionMemoryInput& memory,
                                              const Field& initial_speed,
                                              const SlipVelocitySettings& settings,
@@ -113,14 +123,7 @@ SlipVelocityOutcome solve_with_slip_velocity(const FrictionMemoryInput& memory,
     const bool division_changed = tang.state != last_state;
     last_state = tang.state;
     speed = std::move(next);
-    out.passes = pass;
-    out.mu = friction.mu;
-    const bool tangential_ok = tang.converged;
-    out.tangential = std::move(tang);
-    if (!tangential_ok) {
-      out.message = out.tangential.message;
-      return out;
-    }
+    if (!record_pass(out, pass, friction.mu, std::move(tang))) return out;
     if (dnorm <= 1e-3 * snorm || nslip == 0) {
       out.converged = true;
       return out;

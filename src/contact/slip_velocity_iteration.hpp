@@ -65,6 +65,11 @@ struct FrictionIterationOutcome {
 
 using SlipVelocityOutcome = FrictionIterationOutcome;
 
+/// Keeps pass `pass` (its μ and tangential solution) as the outcome's last; false when that
+/// tangential solve did not converge, whose message then becomes the outcome's.
+bool record_pass(FrictionIterationOutcome& out, int pass, Field mu,
+                 tangential::TangentialResult tangential);
+
 /// Solves the tangential problem for the friction field `mu` (bound μ_I·p_n,I).
 using TangentialSolveWithFriction = std::function<tangential::TangentialResult(const Field& mu)>;
 

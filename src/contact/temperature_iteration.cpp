@@ -58,15 +58,8 @@ TemperatureIterationOutcome solve_with_temperature(const FrictionMemoryInput& me
     const bool division_changed = tang.state != last_state;
     last_state = tang.state;
     temperature = std::move(next);
-    out.passes = pass;
-    out.mu = friction.mu;
     out.temperature_C = temperature;
-    const bool tangential_ok = tang.converged;
-    out.tangential = std::move(tang);
-    if (!tangential_ok) {
-      out.message = out.tangential.message;
-      return out;
-    }
+    if (!record_pass(out, pass, friction.mu, std::move(tang))) return out;
     if (dnorm <= settings.tolerance * tnorm) {
       out.converged = true;
       return out;
