@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace rollcontact {
 
@@ -10,6 +12,17 @@ namespace {
 
 /// Perturbation for the finite-difference start: CONTACT's fallback step.
 constexpr double fd_step = 3e-6;
+
+/// The first step from x0 with the previous case's slope, if that slope is usable: finite, not
+/// zero, and giving a step of at most 100 times the larger of |x0| and the finite-difference step
+/// (a slope from full sliding is nearly zero and would throw the start far away).
+std::optional<double> newton_start(double x0, double r0, double slope) {
+  if (!std::isfinite(slope) || slope == 0.0) return std::nullopt;
+  const double step = -r0 / slope;
+  if (!std::isfinite(step) || std::abs(step) > 100.0 * std::max(std::abs(x0), fd_step))
+    return std::nullopt;
+  return x0 + step;
+}
 
 ForceIterationResult one_unknown(const ForceIterationInput& in,
                                  const std::function<std::array<double, 2>(double, double)>& f) {
@@ -20,9 +33,12 @@ ForceIterationResult one_unknown(const ForceIterationInput& in,
   r.ksi = x0;
   if (std::abs(r0) <= in.eps) {
     r.converged = true;
+    r.jacobian = in.start_jacobian;  // kept for the next case of the sequence
     return r;
   }
-  double x1 = x0 + fd_step, r1 = residual(x1);
+  double x1 = newton_start(x0, r0, in.start_jacobian[0]).value_or(x0 + fd_step);
+  if (x1 == x0) x1 = x0 + fd_step;
+  const double r1 = residual(x1);
   double slope = (r1 - r0) / (x1 - x0);
   // Bracket [lo, hi] with residual(lo) and residual(hi) of opposite sign, once known.
   bool bracketed = (r0 < 0.0) != (r1 < 0.0);
@@ -84,11 +100,13 @@ ForceIterationResult two_unknowns(const ForceIterationInput& in,
   r.eta = y;
   if (size(rv) <= in.eps) {
     r.converged = true;
+    r.jacobian = in.start_jacobian;  // kept for the next case of the sequence
     return r;
   }
-  // Finite-difference Jacobian at the start.
-  std::array<double, 4> j{};
-  {
+  // The previous case's Jacobian, else finite differences at the start.
+  std::array<double, 4> j = in.start_jacobian;
+  const double det0 = j[0] * j[3] - j[1] * j[2];
+  if (!std::isfinite(det0) || std::abs(det0) <= 1e-12 * (j[0] * j[0] + j[3] * j[3])) {
     const auto rx = res(x + fd_step, y);
     const auto ry = res(x, y + fd_step);
     j = {(rx[0] - rv[0]) / fd_step, (ry[0] - rv[0]) / fd_step, (rx[1] - rv[1]) / fd_step,

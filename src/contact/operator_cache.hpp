@@ -123,7 +123,7 @@ class OperatorShelf {
 /// a tenth of that; coarse levels a quarter per level.
 struct OperatorCacheCapacity {
   std::size_t normal = 8;
-  std::size_t tangential = 2;
+  std::size_t tangential = 3;  // the grid's, and the contact box's (contact_box.hpp)
   std::size_t coarse_steady = 8;
 };
 

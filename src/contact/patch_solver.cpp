@@ -9,7 +9,9 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 
+#include "contact/contact_box.hpp"
 #include "contact/force_iteration.hpp"
 #include "contact/interfacial_layer.hpp"
 #include "contact/patch_solver_impl.hpp"
@@ -38,6 +40,10 @@ namespace rollcontact {
 namespace {
 
 using Field = std::vector<double>;
+
+/// The tangential problem is solved on the box around the contact when the box holds at most
+/// this share of the grid's elements (contact/contact_box.hpp).
+constexpr double max_contact_box_fraction = 0.5;
 
 /// Fields of the previous case mapped onto the current grid (same element size, integer offset);
 /// zero where the old grid did not reach (physics.md §2 "Sequences").
@@ -299,9 +305,13 @@ class CaseSolver {
                                                 const Field* mu = nullptr);
   /// The exact tangential problem with a velocity-dependent friction law: the slip-velocity
   /// fixed point of physics.md §10.3 around solve_tangential(); tractions start from px, py.
-  /// The solver for `sys` (physics.md §9.1), started from px0, py0.
+  /// The solver for `sys` (physics.md §9.1), started from px0, py0: on the box around the
+  /// contact where that is small enough (contact/contact_box.hpp), else on the grid.
   tangential::TangentialResult run_tangential_solver(const tangential::TangentialSystem& sys,
                                                      const Field* px0, const Field* py0);
+  /// The solver for `sys` on its own grid.
+  tangential::TangentialResult solve_on_grid(const tangential::TangentialSystem& sys,
+                                             const Field* px0, const Field* py0);
   tangential::TangentialResult solve_velocity_dependent(double cksi, double ceta, double cphi,
                                                         const Field& px, const Field& py);
   /// Temperature-dependent friction (L = 6): the temperature fixed point of physics.md §10.3
@@ -759,8 +769,29 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
 
 tangential::TangentialResult CaseSolver::run_tangential_solver(
     const tangential::TangentialSystem& sys, const Field* px0, const Field* py0) {
+  // IPLAN=4 attenuates between parts of the grid: its operators are not translation invariant.
+  const std::optional<contact::ContactBox> box =
+      interaction_ ? std::nullopt
+                   : contact::contact_box(sys.grid, sys.contact, max_contact_box_fraction);
+  if (!box) return solve_on_grid(sys, px0, py0);
+  const auto& k = sol_.kinematics;
+  const TangentialOperators& ops =
+      st_.operators.tangential(box->grid, sol_.material, problem_.tangential.kind,
+                               k.dq * std::cos(k.chi), k.dq * std::sin(k.chi));
+  const tangential::TangentialSystem sub = contact::restrict_to_box(sys, *box, ops.view());
+  Field bx0, by0;
+  if (px0 != nullptr) bx0 = contact::restrict_to_box(*px0, sys.grid, *box);
+  if (py0 != nullptr) by0 = contact::restrict_to_box(*py0, sys.grid, *box);
+  const tangential::TangentialResult r =
+      solve_on_grid(sub, px0 ? &bx0 : nullptr, py0 ? &by0 : nullptr);
+  return contact::expand_from_box(r, sys.grid, *box);
+}
+
+tangential::TangentialResult CaseSolver::solve_on_grid(const tangential::TangentialSystem& sys,
+                                                       const Field* px0, const Field* py0) {
   using namespace tangential;
-  const std::size_t n = grid_.size();
+  const std::size_t n = sys.grid.size();
+  const Grid& grid = sys.grid;
   const model::TangentialKind kind = problem_.tangential.kind;
   TangentialSettings settings;
   // With prescribed forces the Newton loop stops at |ΔF/(μFN)| ≤ EPS; the tangential solutions
@@ -772,10 +803,10 @@ tangential::TangentialResult CaseSolver::run_tangential_solver(
   TangentialSolverKind method = select_solver(problem_);
   if (method == TangentialSolverKind::SteadyGS) {
     // SteadyGS needs a free trailing column (the inflow of the previous-time field).
-    const int trailing = std::cos(sys.chi) > 0.0 ? 0 : grid_.mx - 1;
+    const int trailing = std::cos(sys.chi) > 0.0 ? 0 : grid.mx - 1;
     bool blocked = false;
-    for (int iy = 0; iy < grid_.my && !blocked; ++iy)
-      blocked = sys.contact[grid_.index(trailing, iy)] != 0;
+    for (int iy = 0; iy < grid.my && !blocked; ++iy)
+      blocked = sys.contact[grid.index(trailing, iy)] != 0;
     if (blocked) {
       method = TangentialSolverKind::ConvexGS;
       notes_.push_back("contact in the trailing column: using ConvexGS instead of SteadyGS");
@@ -908,6 +939,10 @@ void CaseSolver::run() {
       in.start_ksi = restart ? 1e-6 : prev->totals.creep_x + prev->totals.shift_x;
       in.start_eta =
           both ? (restart ? 0.0 : prev->totals.creep_y + prev->totals.shift_y) : creepage.lateral;
+      if (!restart) {
+        const Sensitivities& d = prev->sensitivities;
+        in.start_jacobian = {d.dfx_dksi, d.dfx_deta, d.dfy_dksi, d.dfy_deta};
+      }
       in.eps = problem_.solver.tolerance;
       in.max_iterations = problem_.solver.max_newton_iterations;
       creep = force_iteration(in, evaluate);

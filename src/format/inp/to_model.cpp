@@ -191,6 +191,10 @@ model::PatchProblem to_patch_problem(const CaseRecord& record) {
   p.sequence.continue_previous = d.p != 2;
   p.sequence.becomes_previous = d.p != 3;
   p.sequence.force_iteration_from_previous = !(d.i == 0 || d.i == 2);
+  // I = 1, 2, 3 all start from the previous case's normal part (inp-format.md §3, I); the
+  // pressures are the start of NormCG, not its answer, so a case whose normal problem did not
+  // change converges in its first iteration instead of solving again from the coarse grid.
+  p.sequence.normal_from_previous = d.i != 0;
   if (d.h >= 1) p.heat = heat_of(record);
   if (d.s >= 1) p.subsurface = record.subsurface.blocks;
   return p;
