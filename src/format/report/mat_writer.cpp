@@ -265,30 +265,31 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution,
       const std::size_t i = grid.index(ix, source_iy);
       const auto state = i < solution.state.size() ? solution.state[i] : ElementState::Exterior;
       if (!all && state == ElementState::Exterior) continue;
-      std::string row =
-          two_ints(static_cast<long long>(grid.index(ix, iy)) + 1, static_cast<int>(state));
+      // Appended number by number: a .mat file of a long sequence holds millions of them.
+      out += two_ints(static_cast<long long>(grid.index(ix, iy)) + 1, static_cast<int>(state));
       const double srel = std::hypot(at(solution.sx, i), at(solution.sy, i));
       // The local μ: the velocity-dependent value where the solver had one.
       const double mu =
           i < solution.mu.size() ? solution.mu[i] : row_friction(problem.friction, source_iy);
       for (const double v : {at(solution.h, i), mu, at(solution.pn, i), at(solution.px, i),
                              lateral * at(solution.py, i), at(solution.un, i), at(solution.ux, i),
-                             lateral * at(solution.uy, i), srel}) {
-        row += g14(v);
-      }
+                             lateral * at(solution.uy, i), srel})
+        append_fortran_g(out, v, kWidth, 6);
       int filled = 11;
       if (plastic) {
         for (const double v : {at(solution.yield_limit, i), at(solution.plastic_x, i),
                                lateral * at(solution.plastic_y, i)})
-          row += g14(v);
+          append_fortran_g(out, v, kWidth, 6);
         filled += 3;
       }
       if (heat) {  // surface temperatures [°C] (0 where a solution has none)
-        row += g14(at(solution.temp1, i)) + g14(at(solution.temp2, i));
+        append_fortran_g(out, at(solution.temp1, i), kWidth, 6);
+        append_fortran_g(out, at(solution.temp2, i), kWidth, 6);
         filled += 2;
       }
-      row += zeros(ncol - filled);  // none left: the columns are the header's
-      out += row + "\n";
+      for (int k = filled; k < ncol; ++k)  // none left: the columns are the header's
+        append_fortran_g(out, 0.0, kWidth, 6);
+      out += '\n';
     }
   }
   return out;

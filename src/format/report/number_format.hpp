@@ -23,6 +23,8 @@ std::string fortran_e(double v, int width, int decimals);
 /// Fortran Gw.d (`g12.4`: `0.4200    `, `200.0    `, `0.1000E-03`): fixed F(w-4).(d-s) plus four
 /// blanks when 0.1 <= |v| < 10^d after rounding to d significant digits, else Ew.d.
 std::string fortran_g(double v, int width, int decimals);
+/// fortran_g() appended to `out` (no string of its own: for files of many numbers).
+void append_fortran_g(std::string& out, double v, int width, int decimals);
 
 /// Fortran Iw: right-aligned integer.
 std::string fortran_i(long long v, int width);
