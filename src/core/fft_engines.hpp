@@ -14,6 +14,9 @@ std::unique_ptr<FftEngine> make_fftw_engine(int n_fast, int n_slow, FftPlanning 
 std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int n_fast, int n_slow,
                                                             FftPlanning planning);
 
+/// Whether this process made an FFTW plan that no wisdom held (core/fft_wisdom.hpp).
+bool fftw_planned_beyond_wisdom() noexcept;
+
 /// Double-precision KISS FFT engine (Eigen's unsupported FFT module).
 std::unique_ptr<FftEngine> make_kiss_engine(int n_fast, int n_slow);
 

@@ -1,5 +1,6 @@
-// FFTW3 engine: one 2-D r2c and one 2-D c2r plan (FFTW_ESTIMATE or FFTW_MEASURE) on the engine's
-// own aligned arrays. Compiles to a stub that throws when FFTW is not built.
+// FFTW3 engine: 2-D transforms as row transforms (r2c/c2r, pruned to the nonzero rows) and
+// slow-index column transforms (FFTW_ESTIMATE or FFTW_MEASURE) on the engine's own aligned arrays.
+// Compiles to a stub that throws when FFTW is not built.
 
 #include "core/fft_engines.hpp"
 #include "rollcontact/errors.hpp"
@@ -9,6 +10,7 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <atomic>
 #include <complex>
 #include <cstring>
 #include <mutex>
@@ -26,6 +28,22 @@ std::mutex& planner_mutex() {
   return mutex;
 }
 
+/// Set once the planner searched for a plan that no wisdom held (core/fft_wisdom.hpp writes
+/// the wisdom back only then). Process-wide, like FFTW's planner and its wisdom.
+std::atomic<bool>& planner_learnt() {
+  static std::atomic<bool> learnt{false};
+  return learnt;
+}
+
+/// `make(flags)` from wisdom alone first (FFTW_WISDOM_ONLY: a lookup, no search; the plan is
+/// the one the planner would make), else by the planner's search. Call under planner_mutex().
+template <class Make>
+auto plan_wisdom_first(Make make, unsigned flags) {
+  if (auto plan = make(flags | FFTW_WISDOM_ONLY)) return plan;
+  planner_learnt() = true;
+  return make(flags);
+}
+
 class FftwEngine final : public FftEngine {
  public:
   FftwEngine(int n_fast, int n_slow, FftPlanning planning)
@@ -37,8 +55,7 @@ class FftwEngine final : public FftEngine {
       release();
       throw std::bad_alloc();
     }
-    // The full 2-D plans are made on first use: most engines run one full forward transform
-    // (a kernel's symbol) and never the full inverse, and every plan costs planner time.
+    // Plans are made on first use of a row count: every plan costs planner time.
     std::fill_n(real_, real_size(), 0.0);
   }
   FftwEngine(const FftwEngine&) = delete;
@@ -47,13 +64,13 @@ class FftwEngine final : public FftEngine {
 
   void forward(const double* in, std::complex<double>* out) override {
     std::memcpy(real_, in, sizeof(double) * real_size());
-    fftw_execute(full_plan(forward_, true));
+    execute_forward(n_slow());
     std::memcpy(static_cast<void*>(out), spectrum_, sizeof(fftw_complex) * spectrum_size());
   }
   void inverse(const std::complex<double>* in, double* out) override {
-    // Multi-dimensional c2r always destroys its input: work on the engine's copy.
+    // c2r destroys its input: work on the engine's copy.
     std::memcpy(spectrum_, static_cast<const void*>(in), sizeof(fftw_complex) * spectrum_size());
-    fftw_execute(full_plan(inverse_, false));
+    execute_inverse(n_slow());
     std::memcpy(out, real_, sizeof(double) * real_size());
   }
   std::string_view name() const noexcept override { return "fftw"; }
@@ -64,16 +81,14 @@ class FftwEngine final : public FftEngine {
   }
   void execute_forward(int rows_in) override {
     rows_in = std::clamp(rows_in, 0, n_slow());
-    if (rows_in == n_slow()) {
-      fftw_execute(full_plan(forward_, true));
-      return;
-    }
     if (rows_in == 0) {
       std::fill(spectrum_[0], spectrum_[0] + 2 * spectrum_size(), 0.0);
       return;
     }
     // Row-pruned: r2c of the nonzero rows only, zero the other spectrum rows, then the
-    // slow-index transforms of all columns.
+    // slow-index transforms of all columns. Full transforms (all rows) take the same two steps:
+    // FFTW's 2-D plans cost more planner time (≈ 0.5 ms each at 142×162) than they save in
+    // the one or two full transforms an engine runs (a kernel's symbol).
     const Pruned& p = pruned(rows_in);
     fftw_execute(p.rows_forward);
     std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
@@ -81,10 +96,6 @@ class FftwEngine final : public FftEngine {
   }
   void execute_inverse(int rows_out) override {
     rows_out = std::clamp(rows_out, 0, n_slow());
-    if (rows_out == n_slow()) {
-      fftw_execute(full_plan(inverse_, false));
-      return;
-    }
     if (rows_out == 0) return;
     const Pruned& p = pruned(rows_out);
     fftw_execute(columns_inverse_);
@@ -160,21 +171,6 @@ class FftwEngine final : public FftEngine {
   }
 
  private:
-  /// The full 2-D r2c (forward) or c2r plan in `plan`, made now if missing. Planning may
-  /// overwrite the arrays (FFTW_MEASURE): their contents are saved and restored.
-  fftw_plan full_plan(fftw_plan& plan, bool forward) {
-    if (plan != nullptr) return plan;
-    const ArraysKept kept(*this);
-    {
-      // FFTW is row-major: n0 is the slow index, n1 the contiguous one.
-      std::lock_guard<std::mutex> lock(planner_mutex());
-      plan = forward ? fftw_plan_dft_r2c_2d(n_slow(), n_fast(), real_, spectrum_, flags_)
-                     : fftw_plan_dft_c2r_2d(n_slow(), n_fast(), spectrum_, real_, flags_);
-    }
-    if (plan == nullptr) throw Error("FFTW could not create a plan");
-    return plan;
-  }
-
   /// Keeps real_ and spectrum_ across planning. FFTW_ESTIMATE never touches the arrays (FFTW
   /// manual §4.3.2), so only the other flags pay for copies (at 575×647 two arrays of 12 MB
   /// each, written to fresh pages, for every plan).
@@ -206,10 +202,18 @@ class FftwEngine final : public FftEngine {
     const int nf = n_fast(), n = n_slow(), h = nf / 2 + 1;
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
-      convolution_forward_ = fftw_plan_many_dft(1, &n, h, spectrum_, nullptr, h, 1, columns_,
-                                                nullptr, 1, n, FFTW_FORWARD, flags_);
-      convolution_inverse_ = fftw_plan_many_dft(1, &n, h, columns_, nullptr, 1, n, spectrum_,
-                                                nullptr, h, 1, FFTW_BACKWARD, flags_);
+      convolution_forward_ = plan_wisdom_first(
+          [&](unsigned f) {
+            return fftw_plan_many_dft(1, &n, h, spectrum_, nullptr, h, 1, columns_, nullptr, 1, n,
+                                      FFTW_FORWARD, f);
+          },
+          flags_);
+      convolution_inverse_ = plan_wisdom_first(
+          [&](unsigned f) {
+            return fftw_plan_many_dft(1, &n, h, columns_, nullptr, 1, n, spectrum_, nullptr, h, 1,
+                                      FFTW_BACKWARD, f);
+          },
+          flags_);
     }
     if (convolution_forward_ == nullptr || convolution_inverse_ == nullptr) {
       throw Error("FFTW could not create a convolution plan");
@@ -260,15 +264,31 @@ class FftwEngine final : public FftEngine {
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
       if (columns_forward_ == nullptr) {
-        columns_forward_ = fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
-                                              nullptr, half, 1, FFTW_FORWARD, flags_);
-        columns_inverse_ = fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
-                                              nullptr, half, 1, FFTW_BACKWARD, flags_);
+        columns_forward_ = plan_wisdom_first(
+            [&](unsigned f) {
+              return fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
+                                        nullptr, half, 1, FFTW_FORWARD, f);
+            },
+            flags_);
+        columns_inverse_ = plan_wisdom_first(
+            [&](unsigned f) {
+              return fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
+                                        nullptr, half, 1, FFTW_BACKWARD, f);
+            },
+            flags_);
       }
-      p.rows_forward = fftw_plan_many_dft_r2c(1, &nf, rows, real_, nullptr, 1, nf, spectrum_,
-                                              nullptr, 1, half, flags_);
-      p.rows_inverse = fftw_plan_many_dft_c2r(1, &nf, rows, spectrum_, nullptr, 1, half, real_,
-                                              nullptr, 1, nf, flags_);
+      p.rows_forward = plan_wisdom_first(
+          [&](unsigned f) {
+            return fftw_plan_many_dft_r2c(1, &nf, rows, real_, nullptr, 1, nf, spectrum_, nullptr,
+                                          1, half, f);
+          },
+          flags_);
+      p.rows_inverse = plan_wisdom_first(
+          [&](unsigned f) {
+            return fftw_plan_many_dft_c2r(1, &nf, rows, spectrum_, nullptr, 1, half, real_, nullptr,
+                                          1, nf, f);
+          },
+          flags_);
     }
     pruned_.push_back(p);  // before the check, so that release() destroys partial plans
     if (columns_forward_ == nullptr || columns_inverse_ == nullptr || p.rows_forward == nullptr ||
@@ -281,8 +301,8 @@ class FftwEngine final : public FftEngine {
   void release() noexcept {
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
-      for (fftw_plan plan : {forward_, inverse_, columns_forward_, columns_inverse_,
-                             convolution_forward_, convolution_inverse_}) {
+      for (fftw_plan plan :
+           {columns_forward_, columns_inverse_, convolution_forward_, convolution_inverse_}) {
         if (plan != nullptr) fftw_destroy_plan(plan);
       }
       for (const Pruned& p : pruned_) {
@@ -291,7 +311,7 @@ class FftwEngine final : public FftEngine {
       }
     }
     pruned_.clear();
-    forward_ = inverse_ = columns_forward_ = columns_inverse_ = nullptr;
+    columns_forward_ = columns_inverse_ = nullptr;
     convolution_forward_ = convolution_inverse_ = nullptr;
     if (real_ != nullptr) fftw_free(real_);
     if (spectrum_ != nullptr) fftw_free(spectrum_);
@@ -305,8 +325,6 @@ class FftwEngine final : public FftEngine {
   unsigned flags_;  // FFTW_ESTIMATE or FFTW_MEASURE
   double* real_ = nullptr;
   fftw_complex* spectrum_ = nullptr;
-  fftw_plan forward_ = nullptr;
-  fftw_plan inverse_ = nullptr;
   fftw_plan columns_forward_ = nullptr;  // in-place slow-index transforms of the half-spectrum
   fftw_plan columns_inverse_ = nullptr;
   std::vector<Pruned> pruned_;
@@ -330,13 +348,26 @@ class FftwSingleCirculant final : public SingleCirculant {
       release();
       throw std::bad_alloc();
     }
-    const unsigned flags = planning == FftPlanning::Measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+    flags_ = planning == FftPlanning::Measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+    const int half = static_cast<int>(half_);
     {
+      // The slow-index transforms of all columns, in place; the row transforms follow on first
+      // use, pruned to the block's rows.
       std::lock_guard<std::mutex> lock(planner_mutex());
-      forward_ = fftwf_plan_dft_r2c_2d(ns_, nf_, real_, spectrum_, flags);
-      inverse_ = fftwf_plan_dft_c2r_2d(ns_, nf_, spectrum_, real_, flags);
+      columns_forward_ = plan_wisdom_first(
+          [&](unsigned f) {
+            return fftwf_plan_many_dft(1, &ns_, half, spectrum_, nullptr, half, 1, spectrum_,
+                                       nullptr, half, 1, FFTW_FORWARD, f);
+          },
+          flags_);
+      columns_inverse_ = plan_wisdom_first(
+          [&](unsigned f) {
+            return fftwf_plan_many_dft(1, &ns_, half, spectrum_, nullptr, half, 1, spectrum_,
+                                       nullptr, half, 1, FFTW_BACKWARD, f);
+          },
+          flags_);
     }
-    if (forward_ == nullptr || inverse_ == nullptr) {
+    if (columns_forward_ == nullptr || columns_inverse_ == nullptr) {
       release();
       throw Error("FFTW could not create a single-precision plan");
     }
@@ -351,22 +382,25 @@ class FftwSingleCirculant final : public SingleCirculant {
 
   double apply_dot(const double* in, double* out, int mx, int my) override {
     const std::size_t nf = static_cast<std::size_t>(nf_), m = static_cast<std::size_t>(mx);
+    plan_rows(my);
     for (int iy = 0; iy < my; ++iy) {
       float* dst = real_ + nf * static_cast<std::size_t>(iy);
       const double* src = in + m * static_cast<std::size_t>(iy);
       for (std::size_t ix = 0; ix < m; ++ix) dst[ix] = static_cast<float>(src[ix]);
       std::fill(dst + m, dst + nf, 0.0f);
     }
-    // The inverse transform overwrote the rows beyond the block.
-    std::fill(real_ + nf * static_cast<std::size_t>(my), real_ + nf * static_cast<std::size_t>(ns_),
-              0.0f);
-    fftwf_execute(forward_);
+    // Rows 0 … my−1 hold the block, the others are zero: r2c of the block's rows only, then
+    // the columns; back likewise, to the block's rows only.
+    fftwf_execute(rows_forward_);
     float* s = spectrum_[0];
+    std::fill(s + 2 * half_ * static_cast<std::size_t>(my), s + 2 * symbol_.size(), 0.0f);
+    fftwf_execute(columns_forward_);
     for (std::size_t k = 0; k < symbol_.size(); ++k) {
       s[2 * k] *= symbol_[k];
       s[2 * k + 1] *= symbol_[k];
     }
-    fftwf_execute(inverse_);
+    fftwf_execute(columns_inverse_);
+    fftwf_execute(rows_inverse_);
     double dot[4] = {0.0, 0.0, 0.0, 0.0};  // independent sums (addition latency)
     for (int iy = 0; iy < my; ++iy) {
       const float* src = real_ + nf * static_cast<std::size_t>(iy);
@@ -387,13 +421,49 @@ class FftwSingleCirculant final : public SingleCirculant {
   }
 
  private:
-  void release() noexcept {
+  /// The row transforms for `rows` rows (planned again only if the block's height changes).
+  /// Planning may overwrite the arrays (FFTW_MEASURE); apply_dot() fills them afterwards.
+  void plan_rows(int rows) {
+    if (rows == planned_rows_) return;
+    destroy_row_plans();
+    const int half = static_cast<int>(half_);
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
-      if (forward_ != nullptr) fftwf_destroy_plan(forward_);
-      if (inverse_ != nullptr) fftwf_destroy_plan(inverse_);
+      rows_forward_ = plan_wisdom_first(
+          [&](unsigned f) {
+            return fftwf_plan_many_dft_r2c(1, &nf_, rows, real_, nullptr, 1, nf_, spectrum_,
+                                           nullptr, 1, half, f);
+          },
+          flags_);
+      rows_inverse_ = plan_wisdom_first(
+          [&](unsigned f) {
+            return fftwf_plan_many_dft_c2r(1, &nf_, rows, spectrum_, nullptr, 1, half, real_,
+                                           nullptr, 1, nf_, f);
+          },
+          flags_);
     }
-    forward_ = inverse_ = nullptr;
+    if (rows_forward_ == nullptr || rows_inverse_ == nullptr) {
+      destroy_row_plans();
+      throw Error("FFTW could not create a single-precision plan");
+    }
+    planned_rows_ = rows;
+  }
+  void destroy_row_plans() noexcept {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    if (rows_forward_ != nullptr) fftwf_destroy_plan(rows_forward_);
+    if (rows_inverse_ != nullptr) fftwf_destroy_plan(rows_inverse_);
+    rows_forward_ = rows_inverse_ = nullptr;
+    planned_rows_ = -1;
+  }
+
+  void release() noexcept {
+    destroy_row_plans();
+    {
+      std::lock_guard<std::mutex> lock(planner_mutex());
+      if (columns_forward_ != nullptr) fftwf_destroy_plan(columns_forward_);
+      if (columns_inverse_ != nullptr) fftwf_destroy_plan(columns_inverse_);
+    }
+    columns_forward_ = columns_inverse_ = nullptr;
     if (real_ != nullptr) fftwf_free(real_);
     if (spectrum_ != nullptr) fftwf_free(spectrum_);
     real_ = nullptr;
@@ -405,14 +475,22 @@ class FftwSingleCirculant final : public SingleCirculant {
   std::vector<float> symbol_;  // real symbol per half-spectrum entry
   float* real_ = nullptr;
   fftwf_complex* spectrum_ = nullptr;
-  fftwf_plan forward_ = nullptr;
-  fftwf_plan inverse_ = nullptr;
+  unsigned flags_ = FFTW_ESTIMATE;
+  fftwf_plan columns_forward_ = nullptr;  // slow-index transforms of all columns, in place
+  fftwf_plan columns_inverse_ = nullptr;
+  int planned_rows_ = -1;              // rows of rows_forward_ and rows_inverse_
+  fftwf_plan rows_forward_ = nullptr;  // r2c of the block's rows
+  fftwf_plan rows_inverse_ = nullptr;  // c2r back to them (destroys the spectrum)
 };
 
 }  // namespace
 
 std::unique_ptr<FftEngine> make_fftw_engine(int n_fast, int n_slow, FftPlanning planning) {
   return std::make_unique<FftwEngine>(n_fast, n_slow, planning);
+}
+
+bool fftw_planned_beyond_wisdom() noexcept {
+  return planner_learnt();
 }
 
 std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int n_fast, int n_slow,
@@ -434,6 +512,10 @@ std::unique_ptr<FftEngine> make_fftw_engine(int /*n_fast*/, int /*n_slow*/,
 std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int /*n_fast*/, int /*n_slow*/,
                                                             FftPlanning /*planning*/) {
   return nullptr;
+}
+
+bool fftw_planned_beyond_wisdom() noexcept {
+  return false;
 }
 
 }  // namespace rollcontact::core::detail
