@@ -3,19 +3,24 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "batch/parallel.hpp"
 #include "batch/run_input.hpp"
 #include "batch/temporary_folder.hpp"
 #include "commands.hpp"
 #include "format/inp/builtin_example.hpp"
 #include "format/report/report_writer.hpp"
 #include "format/text/atomic_file.hpp"
+#include "rollcontact/errors.hpp"
 
 namespace rollcontact::cli {
 
@@ -63,7 +68,7 @@ void print_case_summary(const CaseOutcome& c) {
 }
 
 struct RunSettings {
-  std::string input;
+  std::vector<std::string> inputs;
   std::string output_dir;
   std::string backend = "default";
   bool measure = false;
@@ -129,6 +134,73 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
   return result.failed == 0 ? exit_ok : exit_case_failed;
 }
 
+/// Several input files: each is run as `run FILE` would run it (its report, JSON and side
+/// files, bytes as from a run of its own); with --threads N, N files at a time, each file on one
+/// thread. One line per file at the end, in the order given. Exit status: the worst of the files'
+/// (an unreadable file does not stop the others).
+int run_files(const RunSettings& settings, batch::Distribution& distribution) {
+  const std::size_t n = settings.inputs.size();
+  if (distribution.size() > 1 || settings.threads <= 1) {  // one file after the other
+    int status = exit_ok;
+    for (const std::string& input : settings.inputs) {
+      int s = exit_ok;
+      try {
+        s = run_job(input, settings, false, &distribution);
+      } catch (const InputError& e) {
+        if (distribution.is_root()) fmt::print(stderr, "rollcontact: error: {}\n", e.what());
+        s = exit_input_error;
+      }
+      status = std::max(status, s);
+    }
+    return status;
+  }
+  struct FileOutcome {
+    int status = exit_ok;
+    std::string line;
+  };
+  std::vector<FileOutcome> outcomes(n);
+  batch::ParallelOptions parallel;
+  parallel.threads = settings.threads;
+  std::function<void(std::size_t)> progress;
+  if (!settings.quiet && isatty(fileno(stderr)))
+    progress = [n](std::size_t done) {
+      fmt::print(stderr, "\r  {}/{} files   {}", done, n, done == n ? "\n" : "");
+    };
+  batch::parallel_for(
+      n, parallel,
+      [&](std::size_t, std::size_t k) {
+        FileOutcome& o = outcomes[k];
+        batch::RunOptions options;
+        options.output_dir = settings.output_dir;
+        options.solve.fft = parse_backend(settings.backend);
+        options.solve.fft_planning =
+            settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
+        try {
+          const batch::RunResult r = batch::run_input_file(settings.inputs[k], options);
+          o.status = r.failed == 0 ? exit_ok : exit_case_failed;
+          o.line =
+              fmt::format("{}: {} case(s), {} failed; wrote {} and {}", settings.inputs[k],
+                          r.cases.size(), r.failed, r.report_path.string(), r.json_path.string());
+        } catch (const InputError& e) {
+          o.status = exit_input_error;
+          o.line = fmt::format("rollcontact: error: {}", e.what());
+        } catch (const Error& e) {
+          o.status = exit_case_failed;
+          o.line = fmt::format("rollcontact: error: {}", e.what());
+        }
+      },
+      progress);
+  int status = exit_ok;
+  for (const FileOutcome& o : outcomes) {
+    status = std::max(status, o.status);
+    if (o.status == exit_input_error)
+      fmt::print(stderr, "{}\n", o.line);
+    else if (!settings.quiet)
+      fmt::print("{}\n", o.line);
+  }
+  return status;
+}
+
 void add_solver_options(CLI::App* cmd, RunSettings& s) {
   cmd->add_option("--fft", s.backend, "FFT backend")
       ->check(CLI::IsMember({"default", "fftw", "kiss"}))
@@ -144,7 +216,9 @@ CommandRunner add_run_command(CLI::App& app, batch::Distribution& distribution) 
   auto settings = std::make_shared<RunSettings>();
   auto* cmd = app.add_subcommand(
       "run", "Solve every case of a CONTACT .inp file; writes FILE.out (report) and FILE.json");
-  cmd->add_option("FILE", settings->input, "input file (.inp)")
+  cmd->add_option("FILE", settings->inputs,
+                  "input file(s) (.inp); several files run one after the other, or with "
+                  "--threads N N at a time")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output-dir", settings->output_dir,
@@ -155,11 +229,13 @@ CommandRunner add_run_command(CLI::App& app, batch::Distribution& distribution) 
                 "and output to stderr");
   cmd->add_option("-j,--threads", settings->threads,
                   "worker threads: sequences (result elements) run in parallel, each in its "
-                  "order; the outputs are those of one thread")
+                  "order (several files: the files run in parallel); the outputs are those of "
+                  "one thread")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   return [settings, &distribution] {
-    return run_job(settings->input, *settings, false, &distribution);
+    if (settings->inputs.size() > 1) return run_files(*settings, distribution);
+    return run_job(settings->inputs.front(), *settings, false, &distribution);
   };
 }
 
@@ -180,6 +256,7 @@ CommandRunner add_example_command(CLI::App& app) {
     format::write_file_atomically(path, std::string(format::builtin_example_inp));
     if (!settings->quiet) fmt::print("built-in example: {}\n", path.string());
     RunSettings local = *settings;
+    local.inputs = {path.string()};
     local.output_dir.clear();  // outputs next to example.inp
     return run_job(path, local, true);
   };
