@@ -441,6 +441,14 @@ void CaseSolver::set_prescribed_pressure() {
     return;
   }
   const HertzReport& hz = sol_.hertz;
+  if (model == model::PressureModel::Sdec) {
+    const auto& v = problem_.potential.values;  // AA BNEG BPOS SCALE
+    if (problem_.potential.ipotcn != -6)
+      throw ProblemError("SDEC pressures (B=4) need the SDEC potential contact (IPOTCN = -6)");
+    sol_.pn = simplified::sdec_pressure(grid_, v[0], v[1], v[2], hz.fn);
+    sol_.totals.pen = hz.pen;  // of the mean ellipse (a, b), as for B=2, 3
+    return;
+  }
   const bool elliptic = problem_.normal.pressure == model::PressureModel::EllipticHertzian;
   if (!hz.present)
     throw ProblemError(

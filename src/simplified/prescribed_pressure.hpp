@@ -26,4 +26,13 @@ inline constexpr double min_contact_pressure = 1e-20;
 std::vector<double> prescribed_pressure(const Grid& grid, const HertzReport& hertz,
                                         PressureShape shape, double fn);
 
+/// SDEC (B=4, spec/physics.md §7.2): two half-ellipses with the common semi-axis a [mm] along x
+/// and the lateral semi-axes b_neg, b_pos [mm] below and above their widest row
+/// y₀ = −(b_pos − b_neg)/2, spanning |y| ≤ b = (b_neg + b_pos)/2. Per row the half length is
+/// x_l(y) = a√(1 − ((y − y₀)/b_±)²) and the pressure (p₀/a)√(x_l² − x²) with p₀ = 3FN/(2πab),
+/// which carries FN exactly (for b_neg = b_pos the elliptic Hertz pressure). Values ≤ 1e−20
+/// become 0. Throws ProblemError unless a, b_neg, b_pos and fn are positive.
+std::vector<double> sdec_pressure(const Grid& grid, double a, double b_neg, double b_pos,
+                                  double fn);
+
 }  // namespace rollcontact::simplified

@@ -20,6 +20,7 @@ enum class PressureModel {
   ParabolicHertzian,  ///< prescribed parabolic pressure of the Hertz solution
   Kpec,               ///< KPEC approximation for a prescribed approach (B=5)
   Analyn,             ///< modified ANALYN approximation for a prescribed approach (B=6)
+  Sdec,  ///< prescribed pressure on two half-ellipses of semi-axes a, b_neg, b_pos (B=4, IPOTCN=−6)
 };
 
 struct NormalLoading {

@@ -69,6 +69,7 @@ model::NormalLoading normal_of(const CaseRecord& r) {
   n.force_N = r.kinematics.fn;
   n.pressure = r.digits.b == 2   ? model::PressureModel::EllipticHertzian
                : r.digits.b == 3 ? model::PressureModel::ParabolicHertzian
+               : r.digits.b == 4 ? model::PressureModel::Sdec
                : r.digits.b == 5 ? model::PressureModel::Kpec
                : r.digits.b == 6 ? model::PressureModel::Analyn
                                  : model::PressureModel::ExactHalfSpace;
@@ -144,7 +145,6 @@ model::Friction to_model_friction(int law, const FrictionValues& f, double memds
 
 void check_supported(const CaseRecord& record) {
   const ControlDigits& d = record.digits;
-  if (d.b == 4) not_supported(fmt::format("normal method B={}", d.b));
   if (d.m != 0 && d.m != 1 && d.m != 2 && d.m != 3 && d.m != 4 && d.m != 5)
     not_supported(fmt::format("material model M={}", d.m));
   if (d.m == 1 && d.t != 3)
@@ -170,7 +170,6 @@ void check_supported(const CaseRecord& record) {
     not_supported(
         fmt::format("friction law L={} with the simplified theory M={} (not yet validated)",
                     record.friction.law, d.m));
-  if (record.potential.ipotcn == -6) not_supported("SDEC potential contact IPOTCN=-6");
 }
 
 model::PatchProblem to_patch_problem(const CaseRecord& record) {

@@ -155,9 +155,6 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r = basic_record();
   r.digits.c = 9;
   EXPECT_EQ(message_of(r), "not supported yet: influence coefficients C=9");
-  r = basic_record();
-  r.potential.ipotcn = -6;
-  EXPECT_EQ(message_of(r), "not supported yet: SDEC potential contact IPOTCN=-6");
   EXPECT_EQ(message_of(basic_record()), "(accepted)");
 }
 

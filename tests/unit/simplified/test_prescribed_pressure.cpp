@@ -1,4 +1,4 @@
-// Prescribed elliptic and parabolic pressures (B = 2, 3), 3-D and 2-D.
+// Prescribed elliptic and parabolic pressures (B = 2, 3), 3-D and 2-D, and SDEC (B = 4).
 
 #include <gtest/gtest.h>
 
@@ -87,6 +87,40 @@ TEST(PrescribedPressure, TwoDimensionalIsUniformAcrossTheStrip) {
     EXPECT_EQ(p[wide.index(ix, 0)], 0.0);
     EXPECT_EQ(p[wide.index(ix, 2)], 0.0);
   }
+}
+
+TEST(SdecPressure, EqualHalvesAreTheEllipticHertzPressure) {
+  const double a = 8.0, b = 4.0, fn = 82000.0;
+  const Grid g = grid_over(a, b, 41, 41, 1.1);
+  const auto sdec = sdec_pressure(g, a, b, b, fn);
+  const auto hertz = prescribed_pressure(g, ellipse_report(a, b), PressureShape::Elliptic, fn);
+  const double p0 = 1.5 * fn / (pi * a * b);
+  for (std::size_t i = 0; i < sdec.size(); ++i) EXPECT_NEAR(sdec[i], hertz[i], 1e-12 * p0) << i;
+}
+
+TEST(SdecPressure, TwoHalfEllipsesCarryTheForce) {
+  // b_neg = 2, b_pos = 6: b = 4, the widest row at y0 = -2, the patch spans |y| <= 4.
+  const double a = 8.0, b_neg = 2.0, b_pos = 6.0, fn = 82000.0;
+  const Grid g = grid_over(a, 4.0, 161, 161, 1.05);
+  const auto p = sdec_pressure(g, a, b_neg, b_pos, fn);
+  EXPECT_NEAR(total(g, p), fn, 2e-3 * fn);
+  const double p0 = 1.5 * fn / (pi * a * 4.0);
+  EXPECT_NEAR(*std::max_element(p.begin(), p.end()), p0, 2e-3 * p0);  // at (0, y0)
+  double below = 0.0, above = 0.0, y_extent_low = 0.0, y_extent_high = 0.0;
+  for (int iy = 0; iy < g.my; ++iy)
+    for (int ix = 0; ix < g.mx; ++ix) {
+      const double v = p[g.index(ix, iy)], y = g.y_centre(iy);
+      if (v <= 0.0) continue;
+      (y > -2.0 ? above : below) += v;
+      y_extent_low = std::min(y_extent_low, y);
+      y_extent_high = std::max(y_extent_high, y);
+    }
+  // Each half carries FN·b_±/(b_neg + b_pos): 1/4 below y0, 3/4 above.
+  EXPECT_NEAR(below / (below + above), 0.25, 3e-3);
+  EXPECT_NEAR(y_extent_low, -4.0, g.dy);
+  EXPECT_NEAR(y_extent_high, 4.0, g.dy);
+  EXPECT_THROW(sdec_pressure(g, a, 0.0, b_pos, fn), ProblemError);
+  EXPECT_THROW(sdec_pressure(g, a, b_neg, b_pos, -1.0), ProblemError);
 }
 
 TEST(PrescribedPressure, NeedsHertzSemiAxesAndAForce) {
