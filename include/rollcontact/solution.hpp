@@ -123,6 +123,9 @@ struct SolverReport {
   /// temperature fixed point (temperature-dependent friction), and its trace.
   int slip_velocity_passes = 0;
   std::vector<std::string> slip_velocity_trace;
+  /// KPEC (B=5): rows of the gap's interpenetration beyond the equivalent ellipse, where the
+  /// ellipse correction is clamped (a second lobe; simplified::ApproximateNormal); else 0.
+  int kpec_rows_beyond_interpenetration = 0;
 };
 
 /// Effective parameters of the simplified theory (M=2,3,5; spec/physics.md §11.2), for reports.

@@ -473,6 +473,7 @@ void CaseSolver::set_approximate_pressure(bool kpec) {
       kpec ? simplified::kpec_pressure(grid_, h_total, sol_.material)
            : simplified::analyn_pressure(grid_, h_total, sol_.material);
   sol_.pn = std::move(r.pn);
+  sol_.solver.kpec_rows_beyond_interpenetration = r.rows_beyond_interpenetration;
   approximate_ = true;
   sol_.totals.pen = problem_.normal.approach_mm;
 }

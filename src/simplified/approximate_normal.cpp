@@ -165,14 +165,20 @@ ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h,
   double longest = 0.0;
   for (int iy = 0; iy < grid.my; ++iy) {
     const double s = (grid.y_centre(iy) - y_mid) / b;
-    const double eps = std::clamp((a1 * a * a - (a1 * a * a - b1 * b * b) * s * s) / pen, 0.0, 1.0);
+    const double eps_raw = (a1 * a * a - (a1 * a * a - b1 * b * b) * s * s) / pen;
+    const double eps = std::clamp(eps_raw, 0.0, 1.0);
     const double level = (1.0 - eps) * d.h_min;
     int first = -1, last = -1;
-    for (int ix = 0; ix < grid.mx; ++ix)
-      if (gap(grid, h, ix, iy) <= level) {
+    bool interpenetrates = false;
+    for (int ix = 0; ix < grid.mx; ++ix) {
+      const double v = gap(grid, h, ix, iy);
+      interpenetrates = interpenetrates || v < 0.0;
+      if (v <= level) {
         if (first < 0) first = ix;
         last = ix;
       }
+    }
+    if (eps_raw > 1.0 && interpenetrates) ++r.rows_beyond_interpenetration;
     if (first < 0) continue;
     const double x_le = first > 0 ? crossing_x(grid, h, iy, first, first - 1, level)
                                   : grid.x_centre(first) - 0.5 * grid.dx;

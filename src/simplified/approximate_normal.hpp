@@ -16,6 +16,10 @@ struct ApproximateNormal {
   std::vector<double> pn;  ///< pressure per element [N/mm²]
   double pen_total = 0.0;  ///< −min h_tot [mm] (0: no interpenetration, pn all zero)
   HertzReport hertz;       ///< Hertz solution of the equivalent curvatures at pen_total
+  /// KPEC: rows that interpenetrate where the ellipse correction asks for more than the full
+  /// interpenetration (ε(y) > 1, clamped to 1): a second lobe of the gap outside the equivalent
+  /// ellipse. CONTACT's pressures differ there (docs/decisions.md, "KPEC"); 0 for ANALYN.
+  int rows_beyond_interpenetration = 0;
 };
 
 /// KPEC: equivalent curvatures at the deepest point, a row-wise virtual-penetration threshold

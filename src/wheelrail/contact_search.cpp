@@ -171,6 +171,7 @@ std::vector<ContactRegion> combine(std::vector<ContactRegion> regions,
         q.z_min = std::min(q.z_min, r.z_min);
         q.z_max = std::max(q.z_max, r.z_max);
         q.min_gap = std::min(q.min_gap, r.min_gap);
+        q.regions += r.regions;
         q.weight += r.weight;
         q.wx += r.wx;
         q.wy += r.wy;

@@ -35,6 +35,7 @@ struct ContactRegion {
   double y_min = 0.0, y_max = 0.0;      ///< lateral extent (samples first..last) [mm]
   double z_min = 0.0, z_max = 0.0;      ///< vertical extent of the rail surface there [mm]
   double min_gap = 0.0;                 ///< deepest interpenetration (negative) [mm]
+  int regions = 1;                      ///< interpenetration regions combined into this one
   double weight = 0.0;                  ///< Σ w of the samples
   double wx = 0.0, wy = 0.0, wd = 0.0;  ///< Σ w·x_lc, Σ w·y, Σ w·α (for combination)
   /// Regions combined at a distance D_COMB < d ≤ D_SEP, by lateral position: their influence on

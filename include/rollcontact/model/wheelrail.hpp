@@ -117,6 +117,10 @@ struct WheelRailProblem {
   /// The first case of a sequence: contact at a profile end is an error (misplaced wheel).
   bool first_of_sequence = true;
   FrictionVariation friction_variation;  ///< V=1, 2; Along::None: patch.friction
+  /// Refuse (NotSupportedError) the patches whose results are known to differ from CONTACT's
+  /// (docs/decisions.md, "KPEC"): KPEC with interpenetration beyond the equivalent ellipse and
+  /// ANALYN on a patch combined from several regions. The `.inp` route sets it.
+  bool validated_only = false;
 };
 
 }  // namespace rollcontact::model

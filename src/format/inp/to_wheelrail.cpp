@@ -73,9 +73,8 @@ void check_supported(const WheelRailRecord& r) {
     not_supported(fmt::format("contact search D={}", r.discretisation.method));
   if (d.t == 1 || d.t == 2) not_supported(fmt::format("transient rolling or shifts T={}", d.t));
   if (d.f != 0) not_supported(fmt::format("prescribed forces or massless rail F={}", d.f));
-  // The patch-level methods exist (module 3); in module 1 they do not yet reproduce CONTACT's
-  // mbench_a22_kpec cases 1-3 and 6 (docs/decisions.md), so they are not offered there yet.
-  if (d.b == 5 || d.b == 6) not_supported(fmt::format("KPEC/ANALYN B={} (not yet validated)", d.b));
+  // KPEC/ANALYN (B=5, 6) reproduce mbench_a22_kpec cases 2-5; the wheel/rail solver refuses
+  // the patches where they do not (cases 1 and 6; model::WheelRailProblem::validated_only).
   // The wheel/rail solver interpolates V=1, 2 friction per patch (model::FrictionVariation); the
   // .inp route waits until mbench_a22_varfric case 3, whose two patches lie between D_SEP and
   // D_TURN, agrees (docs/decisions.md): cases 1, 2, 4 and 6 already give CONTACT's digits.
@@ -126,6 +125,7 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   p.search = {ds.dx,     ds.ds,     ds.dqrel,  ds.a_sep,  ds.d_sep,
               ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max};
   p.first_of_sequence = r.case_number == 1;
+  p.validated_only = true;
   const VariableFriction& vf = r.variable_friction;
   if (vf.v == 1 || vf.v == 2) {
     p.friction_variation.along = vf.v == 1 ? model::FrictionVariation::Along::RailInclination

@@ -63,5 +63,31 @@ TEST(VerticalForce, SplitIterationMeetsTheTargetWithFewFullSolves) {
     EXPECT_EQ(r.trace[k].iteration, static_cast<int>(k));
 }
 
+// A force that rises steeply where a flat second lobe of the gap comes into contact
+// (mbench_a22_kpec c2: 7.7e6 N/mm near the answer): a step of EPS in z is still 77 N in F_z, so
+// the iteration must go on until F_z meets the target (or the bracket is narrower than EPS).
+TEST(VerticalForce, SteepForceMeetsTheTargetNotJustASmallStep) {
+  constexpr double kSteep = 7.7e6, kRoot = 0.19442;  // [N/mm], [mm]
+  auto steep = [&](double z) {
+    HeightSample h;
+    h.z_mm = z;
+    // Gentle power law below the root, steep rise across it; continuous.
+    const double pen = std::max(0.0, z - 0.178);
+    const double soft = 4.6e6 * std::pow(pen, 1.5);
+    h.fz_N = soft + (z > kRoot - 2e-4 ? kSteep * (z - (kRoot - 2e-4)) : 0.0);
+    h.patches.push_back({pen, 0.0, h.fz_N, 0.0});
+    return h;
+  };
+  VerticalForceSettings st;
+  st.target_N = steep(kRoot).fz_N;
+  st.tolerance = 1e-5;
+  const VerticalForceResult r = solve_vertical_force(st, 0.178, 0.20, steep);
+  ASSERT_TRUE(r.converged) << r.message;
+  // Either within EPS·FZ, or stopped on a bracket around the root narrower than EPS: then at
+  // most slope·EPS off (77 N), never a small step far from the root.
+  EXPECT_LE(std::abs(steep(r.z_mm).fz_N - st.target_N), kSteep * st.tolerance);
+  EXPECT_NEAR(r.z_mm, kRoot, 1e-5);
+}
+
 }  // namespace
 }  // namespace rollcontact::wheelrail
