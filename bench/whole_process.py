@@ -10,13 +10,15 @@ plus x^2/(2*460 mm), approach prescribed, the scale-1 patch stretched by s = 1, 
   - steady rolling with the forces prescribed (F=2, the forces of the creepage-driven run) at
     the first two sizes,
 the same problems the in-process benchmarks bench/normal_problem.cpp and
-bench/tangential_problem.cpp solve. Each file is run as a whole process,
+bench/tangential_problem.cpp solve, and CONTACT's example inputs spence35, carter2d,
+catt_to_cart and tractcurv. Each file is run as a whole process,
 
-    /usr/bin/time -f "%e %M" rollcontact run FILE -q --timing
+    rollcontact run FILE -q --timing
 
---repeat times (with --exe-before, an earlier binary alternating with it run by run); reported
-are the median and the fastest wall time (timed around the process here: %e has 10 ms steps), the largest peak resident set, the median
-split set-up / solve / output that `--timing` prints to stderr, and CONTACT's whole-process time
+--repeat times (with --exe-before, an earlier binary alternating with it run by run), timed from
+spawning to exit (Popen and wait4: /usr/bin/time's %e has 10 ms steps); reported are the median,
+the fastest and the first wall time (the first plans its FFTs afresh), the largest peak resident
+set, the median split set-up / solve / output that `--timing` prints to stderr, and CONTACT's whole-process time
 (gfortran -O2, one thread, this machine class; issue 16) with the ratio.
 
     /usr/bin/python3 bench/whole_process.py --exe build/release/bin/rollcontact --out table.md
@@ -145,24 +147,28 @@ def parse_timing(stderr):
 
 
 def run_once(exe, path, timing):
-    cmd = ["/usr/bin/time", "-f", "%e %M", exe, "run", str(path), "-q"]
+    """One whole process: its wall time from spawning to its exit, as a shell or /usr/bin/time
+    sees it (Popen and wait4; /usr/bin/time's %e has 10 ms steps and its own start-up adds about
+    a millisecond), its peak resident set (wait4's ru_maxrss) and the `--timing` split."""
+    cmd = [exe, "run", str(path), "-q"]
     if timing:
         cmd.append("--timing")
     # FFTW's plans are kept in a cache folder of the run's own (empty at the start): each input's
     # first run plans afresh, the later ones read the plans back (rollcontact/fft_plan_cache.hpp).
     env = dict(os.environ, ROLLCONTACT_CACHE_DIR=str(path.parent / "plan-cache"))
-    start = time.perf_counter()
-    p = subprocess.run(cmd, capture_output=True, text=True, env=env)
-    wall = time.perf_counter() - start
-    lines = [l for l in p.stderr.splitlines() if l.strip()]
+    with tempfile.TemporaryFile() as err:
+        start = time.perf_counter()
+        p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=err, env=env)
+        _, status, usage = os.wait4(p.pid, 0)
+        wall = time.perf_counter() - start
+        p.returncode = os.waitstatus_to_exitcode(status)
+        err.seek(0)
+        stderr = err.read().decode()
     # Status 1: some case not solved (tractcurv's cases 91-120 are not supported yet); the others
     # are timed all the same.
     if p.returncode not in (0, 1):
-        raise RuntimeError(f"{path.name}: exit {p.returncode}\n{p.stderr}")
-    # /usr/bin/time's %e has 10 ms steps: the wall time is taken here (its own start-up, about
-    # a millisecond, included), the peak resident set from time's %M.
-    rss_kb = lines[-1].split()[1]
-    return wall, float(rss_kb) / 1024.0, parse_timing(p.stderr)
+        raise RuntimeError(f"{path.name}: exit {p.returncode}\n{stderr}")
+    return wall, usage.ru_maxrss / 1024.0, parse_timing(stderr)
 
 
 def first_case(json_path):
@@ -290,10 +296,11 @@ def markdown(results, before, args):
     reps = 1 if args.quick else args.repeat
     lines += [
         "",
-        f"Wall time: median of {reps} whole processes `/usr/bin/time -f \"%e %M\" rollcontact run "
-        "FILE -q --timing`, timed around the process; fastest run: the quickest of them; first "
+        f"Wall time: median of {reps} whole processes `rollcontact run FILE -q --timing`, from "
+        "spawning to exit (Python's Popen and wait4, as a shell or `/usr/bin/time` sees it); "
+        "fastest run: the quickest of them; first "
         "run: the first of them, which plans its FFTs afresh (the others read the plans back from "
-        "the run's FFTW plan cache); peak RSS: the largest (%M)."
+        "the run's FFTW plan cache); peak RSS: the largest (wait4's ru_maxrss)."
         + (" Before: the earlier binary, run alternately with this one." if args.exe_before else "")
         + " Set-up (reading, geometry, influence kernels, operators, FFT plans, preconditioners), "
         "solve and output (report, JSON): medians of `--timing`; process start-up and exit count "

@@ -164,7 +164,7 @@ double filter_small(double v, double threshold) {
   return std::fabs(v) < threshold ? 0.0 : v;
 }
 
-std::string fmt_sig(int width, int digits, int sci_digits, double v) {
+void append_fmt_sig(std::string& out, int width, int digits, int sci_digits, double v) {
   const double a = std::fabs(v);
   const int lg = a < 1e-20 ? 0 : static_cast<int>(std::floor(std::log10(a) + 1e-7));
   Text t;
@@ -175,7 +175,13 @@ std::string fmt_sig(int width, int digits, int sci_digits, double v) {
     t.put_number(v, std::chars_format::fixed, decimals);
     if (decimals == 0) t.put('.');
   }
-  return fit(t, width);
+  append_fit(out, t, width);
+}
+
+std::string fmt_sig(int width, int digits, int sci_digits, double v) {
+  std::string s;
+  append_fmt_sig(s, width, digits, sci_digits, v);
+  return s;
 }
 
 std::string fortran_f(double v, int width, int decimals) {

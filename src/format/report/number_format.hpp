@@ -12,6 +12,8 @@ namespace rollcontact::format {
 /// with `sci_digits` significant digits when lg >= digits or lg <= -2 (`1.998E-02`), otherwise
 /// fixed with max(0, digits - lg - 1) decimals (`9.195`, `-36.24`, `10000.`). Right-aligned.
 std::string fmt_sig(int width, int digits, int sci_digits, double v);
+/// fmt_sig() appended to `out` (for files of many numbers).
+void append_fmt_sig(std::string& out, int width, int digits, int sci_digits, double v);
 
 /// Fortran Fw.d (`f10.1`): fixed with `decimals` decimals; leading zero dropped if needed to fit.
 std::string fortran_f(double v, int width, int decimals);

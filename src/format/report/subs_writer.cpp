@@ -36,7 +36,7 @@ void append_block(std::string& out, const SubsurfaceResult& r, bool tensor) {
     const double row[14] = {r.x[k % nx], r.y[(k / nx) % ny], r.z[k / (nx * ny)], r.ux[k],  r.uy[k],
                             r.uz[k],     r.sighyd[k],        r.sigvm[k],         r.sxx[k], r.sxy[k],
                             r.sxz[k],    r.syy[k],           r.syz[k],           r.szz[k]};
-    for (std::size_t c = 0; c < columns; ++c) out += fmt_sig(12, 6, 5, row[c]);
+    for (std::size_t c = 0; c < columns; ++c) append_fmt_sig(out, 12, 6, 5, row[c]);
     out += '\n';
   }
 }
