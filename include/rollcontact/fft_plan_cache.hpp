@@ -31,7 +31,8 @@ class FftPlanCache {
   FftPlanCache(const FftPlanCache&) = delete;
   FftPlanCache& operator=(const FftPlanCache&) = delete;
 
-  /// Whether the files held wisdom of this FFTW build (for tests and --timing reports).
+  /// Whether the double-precision file held wisdom of this FFTW build (the single-precision one
+  /// is read only before the process's first single-precision plan).
   bool imported() const noexcept { return imported_; }
 
  private:

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <mutex>
 #include <new>
+#include <string>
 #include <vector>
 
 namespace rollcontact::core::detail {
@@ -33,6 +34,18 @@ std::mutex& planner_mutex() {
 std::atomic<bool>& planner_learnt() {
   static std::atomic<bool> learnt{false};
   return learnt;
+}
+
+/// Single-precision wisdom to read before the first single-precision plan, and whether one was
+/// made. Reading it at start-up would start FFTW's single-precision planner (≈ 0.4 ms) in
+/// processes that never plan in single precision (small grids). Under planner_mutex().
+struct SingleWisdom {
+  std::string pending;
+  bool used = false;
+};
+SingleWisdom& single_wisdom() {
+  static SingleWisdom state;
+  return state;
 }
 
 /// `make(flags)` from wisdom alone first (FFTW_WISDOM_ONLY: a lookup, no search; the plan is
@@ -354,6 +367,10 @@ class FftwSingleCirculant final : public SingleCirculant {
       // The slow-index transforms of all columns, in place; the row transforms follow on first
       // use, pruned to the block's rows.
       std::lock_guard<std::mutex> lock(planner_mutex());
+      SingleWisdom& wisdom = single_wisdom();
+      if (!wisdom.pending.empty()) fftwf_import_wisdom_from_string(wisdom.pending.c_str());
+      wisdom.pending.clear();
+      wisdom.used = true;
       columns_forward_ = plan_wisdom_first(
           [&](unsigned f) {
             return fftwf_plan_many_dft(1, &ns_, half, spectrum_, nullptr, half, 1, spectrum_,
@@ -493,6 +510,16 @@ bool fftw_planned_beyond_wisdom() noexcept {
   return planner_learnt();
 }
 
+void defer_single_precision_wisdom(std::string text) {
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  single_wisdom().pending = std::move(text);
+}
+
+bool fftw_single_precision_used() noexcept {
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  return single_wisdom().used;
+}
+
 std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int n_fast, int n_slow,
                                                             FftPlanning planning) {
   return std::make_unique<FftwSingleCirculant>(n_fast, n_slow, planning);
@@ -515,6 +542,12 @@ std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int /*n_fast*/, int 
 }
 
 bool fftw_planned_beyond_wisdom() noexcept {
+  return false;
+}
+
+void defer_single_precision_wisdom(std::string /*text*/) {}
+
+bool fftw_single_precision_used() noexcept {
   return false;
 }
 

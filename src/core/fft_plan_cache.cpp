@@ -109,10 +109,11 @@ FftPlanCache::FftPlanCache(std::filesystem::path dir) : dir_(std::move(dir)) {
 #if ROLLCONTACT_HAVE_FFTW
   double_text_ = read_text(dir_ / double_file);
   single_text_ = read_text(dir_ / single_file);
-  // An import that fails (another FFTW version or configuration) changes nothing.
+  // An import that fails (another FFTW version or configuration) changes nothing. The
+  // single-precision wisdom is read only before a single-precision plan is made.
   const bool d = !double_text_.empty() && fftw_import_wisdom_from_string(double_text_.c_str());
-  const bool f = !single_text_.empty() && fftwf_import_wisdom_from_string(single_text_.c_str());
-  imported_ = d || f;
+  core::detail::defer_single_precision_wisdom(single_text_);
+  imported_ = d;
 #endif
 }
 
@@ -121,9 +122,11 @@ FftPlanCache::~FftPlanCache() {
   if (!core::detail::fftw_planned_beyond_wisdom()) return;  // nothing the files lack
   try {
     const std::string d = exported(fftw_export_wisdom_to_string, [](char* s) { fftw_free(s); });
-    const std::string f = exported(fftwf_export_wisdom_to_string, [](char* s) { fftwf_free(s); });
     write_if_changed(dir_ / double_file, d, double_text_);
-    write_if_changed(dir_ / single_file, f, single_text_);
+    if (core::detail::fftw_single_precision_used()) {
+      const std::string f = exported(fftwf_export_wisdom_to_string, [](char* s) { fftwf_free(s); });
+      write_if_changed(dir_ / single_file, f, single_text_);
+    }
   } catch (...) {  // a cache: never fail the run for it
   }
 #endif
