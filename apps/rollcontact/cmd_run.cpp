@@ -136,8 +136,8 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
 
 /// Several input files: each is run as `run FILE` would run it (its report, JSON and side
 /// files, bytes as from a run of its own); with --threads N, N files at a time, each file on one
-/// thread. One line per file at the end, in the order given. Exit status: the worst of the files'
-/// (an unreadable file does not stop the others).
+/// thread, the costliest first. One line per file at the end, in the order given. Exit status: the
+/// worst of the files' (an unreadable file does not stop the others).
 int run_files(const RunSettings& settings, batch::Distribution& distribution) {
   const std::size_t n = settings.inputs.size();
   if (distribution.size() > 1 || settings.threads <= 1) {  // one file after the other
@@ -166,9 +166,23 @@ int run_files(const RunSettings& settings, batch::Distribution& distribution) {
     progress = [n](std::size_t done) {
       fmt::print(stderr, "\r  {}/{} files   {}", done, n, done == n ? "\n" : "");
     };
+  // Longest first (by an estimate from the inputs): a long file started last would leave the
+  // other threads idle at the end. Unreadable files sort last and report their error there.
+  std::vector<std::size_t> order(n);
+  std::vector<double> cost(n, -1.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    order[k] = k;
+    try {
+      cost[k] = batch::estimated_run_cost(settings.inputs[k]);
+    } catch (const Error&) {
+    }
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   batch::parallel_for(
       n, parallel,
-      [&](std::size_t, std::size_t k) {
+      [&](std::size_t, std::size_t j) {
+        const std::size_t k = order[j];
         FileOutcome& o = outcomes[k];
         batch::RunOptions options;
         options.output_dir = settings.output_dir;

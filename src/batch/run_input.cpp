@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -417,6 +418,23 @@ void refuse_overwriting_input(const std::filesystem::path& input,
 }
 
 }  // namespace
+
+double estimated_run_cost(const std::filesystem::path& input) {
+  double cost = 0.0;
+  for (const format::InputCase& c : read_problems(input)) {
+    if (const auto* w = std::get_if<format::WheelRailRecord>(&c)) {
+      const bool force = w->digits.n == 1;
+      const double load = force && w->motion.fz > 0.0 ? w->motion.fz / 1e4 : 1.0;
+      const double area_mm2 = 25.0 * std::cbrt(load * load);
+      cost += (force ? 2.0 : 1.0) * area_mm2 /
+              std::max(w->discretisation.dx * w->discretisation.ds, 1e-6);
+    } else {
+      const auto& r = std::get<format::CaseRecord>(c);
+      cost += (r.digits.t != 0 ? 3.0 : 1.0) * r.potential.mx * r.potential.my;
+    }
+  }
+  return cost;
+}
 
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
   const std::filesystem::path dir =

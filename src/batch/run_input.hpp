@@ -74,6 +74,13 @@ Solution solve_case(const format::CaseRecord& record, PatchSolver& solver);
 /// <name>.out and <name>.json atomically. Throws InputError (nothing written) for bad input.
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options);
 
+/// A rough cost of solving the cases of `input`, to start several files longest first (it only
+/// orders, it never changes a result): per case the elements to solve for — module 3 the grid
+/// MX·MY, three times with a tangential problem; module 1 a Hertzian patch of 25 mm² at 10 kN
+/// growing like FZ^(2/3) over DX·DS, twice with the vertical force prescribed. Throws
+/// InputError like run_input_file for an unreadable file.
+double estimated_run_cost(const std::filesystem::path& input);
+
 /// Same for problems already read; `input_name` names the outputs.
 RunResult run_problems(const std::vector<format::InputCase>& problems,
                        const std::string& input_name, const std::filesystem::path& output_stem,
