@@ -4,7 +4,8 @@ shared examples (S1002 on UIC60) refined from 21 to 101 lateral positions (0-10 
 steps, yaw rising with it to 24 mrad; roll and pitch rate interpolated between the benchmark's
 values), for the right and the left wheel, FZ = 10 and 50 kN per wheel (20 and 100 kN per
 axle), DX = DS = 0.5 and 0.2 mm, steady rolling with the exact solvers, the vertical force
-prescribed (N=1) and the position prescribed (N=0, at the heights the N=1 sweep found).
+prescribed (N=1) and the position prescribed (N=0, at the heights the N=1 sweep found), and
+KPEC pressures (B=5) with Fastsim (M=3) at prescribed vertical force: 24 sweeps, 2,424 cases.
 
 Each sweep is one .inp file of 101 cases, run as a whole process under /usr/bin/time -v
 (median of --repeat runs). Reported per sweep: wall time, time per case, peak memory, the share
@@ -62,14 +63,24 @@ def interpolate(cases, y):
     return cases[-1][1:]
 
 
-def digits_line(line, n_digit):
-    """The C-P-B-T-N-F-S line with N replaced."""
+def digits_line(line, n_digit, kpec=False):
+    """The C-P-B-T-N-F-S line with N replaced (and B = 5, KPEC, when asked)."""
     word = line.split()[0]
-    return line.replace(word, word[:4] + str(n_digit) + word[5:], 1)
+    new = word[:4] + str(n_digit) + word[5:]
+    if kpec:
+        new = new[:2] + "5" + new[3:]
+    return line.replace(word, new, 1)
 
 
-def write_sweep(path, side_file, load, grid, positions, heights=None):
-    """One sweep file; heights (per case, from the N=1 run) make it position-prescribed."""
+def material_digit(line, m_digit):
+    """The V-L-D-C-M-Z-E line with M replaced."""
+    word = line.split()[0]
+    return line.replace(word, word[:4] + str(m_digit) + word[5:], 1)
+
+
+def write_sweep(path, side_file, load, grid, positions, heights=None, kpec=False):
+    """One sweep file; heights (per case, from the N=1 run) make it position-prescribed; kpec:
+    KPEC pressures (B=5) with Fastsim (M=3), as mbench_a22_kpec's first cases."""
     first, cases = benchmark_cases(side_file)
     sign = 1.0 if cases[-1][0] >= 0 else -1.0
     out = []
@@ -85,7 +96,9 @@ def write_sweep(path, side_file, load, grid, positions, heights=None):
                 if line.startswith("%"):
                     continue
                 if "C-P-B-T-N-F-S" in line:
-                    line = digits_line(line, 0 if heights else 1)
+                    line = digits_line(line, 0 if heights else 1, kpec)
+                elif "V-L-D-C-M-Z-E" in line and kpec:
+                    line = material_digit(line, 3)
                 elif "DX" in line and "DS" in line:
                     v = line.split()
                     line = f"  {grid:.3f}   {grid:.3f}   {v[2]}   {v[3]}   {v[4]}   {v[5]}      DX, DS, DQREL, A_SEP, D_SEP, D_COMB"
@@ -94,10 +107,13 @@ def write_sweep(path, side_file, load, grid, positions, heights=None):
                 elif "VS,VY,VZ" in line:
                     line = velocity
                 out.append(line)
+                if kpec and "POISS" in line:
+                    out.append("  1.000   1.000   1.000                        K0_MF,ALFAMF,BETAMF")
         else:
             digits = [l for l in first if "C-P-B-T-N-F-S" in l][0]
-            out += ["  1 MODULE", digits_line(digits, 0 if heights else 1),
-                    " 0111002    V-L-D-C-M-Z-E", " 0100321    H-G-I-A-O-W-R", wheelset, velocity]
+            out += ["  1 MODULE", digits_line(digits, 0 if heights else 1, kpec),
+                    f" 0111{3 if kpec else 0}02    V-L-D-C-M-Z-E", " 0100321    H-G-I-A-O-W-R",
+                    wheelset, velocity]
         out.append("")
     out.append("  0 MODULE")
     path.write_text("\n".join(out) + "\n")
@@ -140,9 +156,10 @@ def main():
             for grid in GRIDS_MM:
                 stem = f"{side}_fz{int(load / 1000)}k_dx{grid}"
                 heights = None
-                for mode in ("force", "position"):
+                for mode in ("force", "position", "kpec"):
                     inp = out / f"{stem}_{mode}.inp"
-                    write_sweep(inp, examples / side_name, load, grid, positions, heights)
+                    write_sweep(inp, examples / side_name, load, grid, positions,
+                                heights if mode == "position" else None, mode == "kpec")
                     runs = [run(a.exe, inp) for _ in range(max(1, a.repeat))]
                     wall = statistics.median(r[0] for r in runs)
                     rss = max(r[1] for r in runs)
