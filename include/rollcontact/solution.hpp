@@ -3,10 +3,12 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "rollcontact/grid.hpp"
+#include "rollcontact/model/influence_table.hpp"
 
 namespace rollcontact {
 
@@ -41,6 +43,9 @@ struct CombinedMaterial {
   /// Viscoelastic bodies (M=1): the delayed parts added to every coefficient (g, nu, k above are
   /// then the glassy constants); empty (weight 0) for elastic bodies.
   std::array<ViscousCompliance, 2> viscous{};
+  /// Coefficients from a file (C=9) instead of the closed forms; g still divides them (they are
+  /// tabulated without 1/G). Null: the closed forms of g, nu, k.
+  std::shared_ptr<const model::InfluenceTable> table{};
 
   bool viscoelastic() const noexcept {
     return viscous[0].weight != 0.0 || viscous[1].weight != 0.0;

@@ -365,6 +365,8 @@ void validate_cases(const std::vector<format::InputCase>& problems) {
     model::PatchProblem p;
     try {
       p = format::to_patch_problem(r);
+    } catch (const InputError&) {
+      throw;  // a file the case reads (C=9 coefficients) is malformed: as bad as the input
     } catch (const Error&) {
       continue;
     }

@@ -61,8 +61,9 @@ struct OperatorKey {
            a.material.nu == b.material.nu && a.material.k == b.material.k &&
            a.material.layer_compliance == b.material.layer_compliance &&
            a.material.normal_layer_compliance == b.material.normal_layer_compliance &&
-           a.material.viscous == b.material.viscous && a.kind == b.kind && a.shift_x == b.shift_x &&
-           a.shift_y == b.shift_y && elastic::same_interaction(a.interaction, b.interaction);
+           a.material.viscous == b.material.viscous && a.material.table == b.material.table &&
+           a.kind == b.kind && a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
+           elastic::same_interaction(a.interaction, b.interaction);
   }
 };
 

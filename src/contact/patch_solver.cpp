@@ -134,6 +134,7 @@ Field coarse_grid_start(PatchSolver::Impl& st, int level, const Grid& grid, cons
                         const normal::NormalSettings& settings, int& iterations) {
   constexpr std::size_t min_elements = 20000;  // below this a coarse start does not pay
   if (grid.size() < min_elements || grid.mx < 16 || grid.my < 16) return {};
+  if (material.table) return {};  // a file's coefficients (C=9) exist for its element size only
   const Grid coarse{(grid.mx + 1) / 2, (grid.my + 1) / 2, grid.xl,
                     grid.yl,           2.0 * grid.dx,     2.0 * grid.dy};
   Field ch(coarse.size(), geometry::excluded_distance);
@@ -186,6 +187,7 @@ bool steady_coarse_start(PatchSolver::Impl& st, int level, const tangential::Tan
   const std::size_t ncon =
       static_cast<std::size_t>(std::count(sys.contact.begin(), sys.contact.end(), char{1}));
   if (ncon < min_contact || grid.mx < 16 || grid.my < 16) return false;
+  if (material.table) return false;  // a file's coefficients (C=9) exist for its element size only
   const Grid coarse{(grid.mx + 1) / 2, (grid.my + 1) / 2, grid.xl,
                     grid.yl,           2.0 * grid.dx,     2.0 * grid.dy};
   const std::size_t nc = coarse.size();

@@ -18,6 +18,7 @@
 #include <limits>
 #include <vector>
 
+#include "elastic/table_kernel.hpp"
 #include "elastic/viscous_kernel.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -381,6 +382,15 @@ void finish_kernel(Component c, const Grid& grid, const CombinedMaterial& materi
 std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& grid,
                                  const CombinedMaterial& material, double shift_x, double shift_y) {
   check_grid(material, grid);
+  if (material.table) {
+    std::vector<Kernel> out;
+    out.reserve(cs.size());
+    for (Component c : cs) {
+      out.push_back(table_kernel(c, grid, material, shift_x, shift_y));
+      finish_kernel(c, grid, material, shift_x, shift_y, out.back());
+    }
+    return out;
+  }
   const Real floor = Real(grid.dx) * 1e-10L;
   // nn, xx, yy and xy on one lattice (shared logarithms); the couplings one by one.
   std::vector<Component> shared;

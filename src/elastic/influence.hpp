@@ -48,8 +48,10 @@ class Kernel {
 inline constexpr double kCouplingThreshold = 1e-6;
 
 /// True when the material couples the normal and tangential problems (|K| ≥ threshold, or a
-/// viscous part with a coupling of that size: dissimilar viscoelastic bodies).
+/// viscous part with a coupling of that size: dissimilar viscoelastic bodies). Coefficients from
+/// a file couple when the file has coupling terms, whatever K the material lines give.
 inline bool is_coupled(const CombinedMaterial& material) noexcept {
+  if (material.table) return material.table->coupled;
   const auto large = [](double k) { return k >= kCouplingThreshold || k <= -kCouplingThreshold; };
   return large(material.k) || large(material.viscous[0].weight * material.viscous[0].k) ||
          large(material.viscous[1].weight * material.viscous[1].k);
@@ -57,7 +59,8 @@ inline bool is_coupled(const CombinedMaterial& material) noexcept {
 
 /// Tabulates component c of the influence matrix for the grid and material (divided by G),
 /// including an interfacial layer's compliance and the viscous parts of viscoelastic bodies
-/// (elastic/viscous_kernel.hpp).
+/// (elastic/viscous_kernel.hpp). With material.table (C=9) the coefficients come from the table
+/// (elastic/table_kernel.hpp) instead of the closed forms.
 Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                    double shift_x = 0.0, double shift_y = 0.0);
 

@@ -68,7 +68,8 @@ std::vector<Kernel> KernelLibrary::kernels(const std::vector<Component>& cs, con
                                            double shift_y) {
   // The quadrature of a viscous part follows the grid's length (its kinks), so a kernel cut from
   // a larger grid's would differ in the last digits: viscoelastic kernels are made directly.
-  if (m.viscoelastic()) {
+  // Kernels from a file's table (C=9) are copies of it, cheaper than the search.
+  if (m.viscoelastic() || m.table) {
     computed_ += cs.size();
     return make_kernels(cs, grid, m, shift_x, shift_y);
   }

@@ -3,6 +3,9 @@
 // Units: N/mm² (MPa) for moduli, mm³/N for flexibilities.
 
 #include <array>
+#include <memory>
+
+#include "rollcontact/model/influence_table.hpp"
 
 namespace rollcontact::model {
 
@@ -83,6 +86,10 @@ struct Bodies {
   /// CONTACT M=1: both bodies are standard linear solids (steady rolling only, χ = 0).
   bool viscoelastic = false;
   ViscoelasticBody viscous1, viscous2;
+  /// CONTACT C=9: influence coefficients read from a file, used instead of the closed forms of
+  /// the piecewise-constant half-space (C=2); null: the closed forms. Shared, not copied, between
+  /// the cases that use one file.
+  std::shared_ptr<const InfluenceTable> influence_table;
 };
 
 }  // namespace rollcontact::model

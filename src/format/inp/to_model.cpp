@@ -5,7 +5,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
+#include "format/inp/grid_extent.hpp"
+#include "format/inp/influence_file.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -156,8 +159,11 @@ void check_supported(const CaseRecord& record) {
   if ((d.m == 2 || d.m == 3 || d.m == 5) && d.t == 1)
     not_supported(fmt::format("the simplified theory M={} with shifts T=1", d.m));
   if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
-  if (d.c == 3 || d.c == 4 || d.c == 9)
-    not_supported(fmt::format("influence coefficients C={}", d.c));
+  // The coefficients in effect (C=0, 1 keep the previous case's).
+  const int c = record.materials.influence_type;
+  if (c == 3 || c == 4) not_supported(fmt::format("influence coefficients C={}", c));
+  if (c == 9 && d.m == 1)
+    not_supported("influence coefficients from a file (C=9) with viscoelastic bodies M=1");
   if (d.h != 0 && d.t != 0 && d.t != 3)
     not_supported(fmt::format("temperature H={} with T={} (steady rolling only)", d.h, d.t));
   if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
@@ -180,6 +186,12 @@ model::PatchProblem to_patch_problem(const CaseRecord& record) {
   p.gap = record.geometry;
   p.bodies = bodies_of(record);
   if (d.b == 1) p.bodies.normal_layer_flexibility_mm3_N = record.materials.flxz;
+  if (record.materials.influence_type == 9) {
+    const GridExtent ext = grid_extent(record.potential);
+    std::optional<ElementSize> element;
+    if (ext.known && ext.dx > 0.0 && ext.dy > 0.0) element = ElementSize{ext.dx, ext.dy};
+    p.bodies.influence_table = read_influence_file(record.materials.influence_file, element);
+  }
   const Friction& f = record.friction;
   p.friction = to_model_friction(f.law, {f.fstat, f.fkin, f.params}, f.memdst, f.mem_s0);
   p.normal = normal_of(record);

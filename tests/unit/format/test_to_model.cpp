@@ -153,8 +153,21 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r.digits.t = 2;
   EXPECT_EQ(message_of(r), "not supported yet: temperature H=3 with T=2 (steady rolling only)");
   r = basic_record();
+  r.digits.c = 3;
+  r.materials.influence_type = 3;
+  EXPECT_EQ(message_of(r), "not supported yet: influence coefficients C=3");
+  r = basic_record();
+  r.digits.c = 1;  // keeps the coefficients of the previous case: what counts is the type kept
+  r.materials.influence_type = 4;
+  EXPECT_EQ(message_of(r), "not supported yet: influence coefficients C=4");
+  r = basic_record();
   r.digits.c = 9;
-  EXPECT_EQ(message_of(r), "not supported yet: influence coefficients C=9");
+  r.digits.m = 1;
+  r.digits.t = 3;
+  r.materials.influence_type = 9;
+  EXPECT_EQ(message_of(r),
+            "not supported yet: influence coefficients from a file (C=9) with viscoelastic bodies "
+            "M=1");
   EXPECT_EQ(message_of(basic_record()), "(accepted)");
 }
 

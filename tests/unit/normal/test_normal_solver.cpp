@@ -18,7 +18,7 @@ namespace rollcontact::normal {
 namespace {
 
 // Steel-like material: G = 82000 N/mm², ν = 0.28 (values do not matter for the relative errors).
-constexpr CombinedMaterial steel{82000.0, 0.28, 0.0};
+const CombinedMaterial steel{82000.0, 0.28, 0.0};
 double estar() {
   return steel.g / (1.0 - steel.nu);
 }
