@@ -85,9 +85,18 @@ void print_timing(const batch::RunTiming& t) {
   fmt::print(stderr, "timing: output   {:.4f} s\n", t.output);
 }
 
+/// The options every run shares: output folder and FFT choices.
+batch::RunOptions solver_run_options(const RunSettings& settings) {
+  batch::RunOptions options;
+  options.output_dir = settings.output_dir;
+  options.solve.fft = parse_backend(settings.backend);
+  options.solve.fft_planning = settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
+  return options;
+}
+
 int run_job(const std::filesystem::path& input, const RunSettings& settings, bool show_picture,
             batch::Distribution* distribution = nullptr) {
-  batch::RunOptions options;
+  batch::RunOptions options = solver_run_options(settings);
   const bool distributed = distribution != nullptr && distribution->size() > 1;
   if (distributed) {
     options.distribution = distribution;
@@ -95,9 +104,6 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
       fmt::print(stderr, "run: {} MPI processes, one sequence (result element) at a time each{}\n",
                  distribution->size(), settings.threads > 1 ? "; --threads ignored" : "");
   }
-  options.output_dir = settings.output_dir;
-  options.solve.fft = parse_backend(settings.backend);
-  options.solve.fft_planning = settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
   const bool quiet = settings.quiet;
   options.on_case = [quiet, show_picture](const CaseOutcome& c, std::size_t k, std::size_t count) {
     if (quiet) return;
@@ -134,26 +140,43 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
   return result.failed == 0 ? exit_ok : exit_case_failed;
 }
 
-/// Several input files: each is run as `run FILE` would run it (its report, JSON and side
-/// files, bytes as from a run of its own); with --threads N, N files at a time, each file on one
-/// thread, the costliest first. One line per file at the end, in the order given. Exit status: the
-/// worst of the files' (an unreadable file does not stop the others).
-int run_files(const RunSettings& settings, batch::Distribution& distribution) {
-  const std::size_t n = settings.inputs.size();
-  if (distribution.size() > 1 || settings.threads <= 1) {  // one file after the other
-    int status = exit_ok;
-    for (const std::string& input : settings.inputs) {
-      int s = exit_ok;
-      try {
-        s = run_job(input, settings, false, &distribution);
-      } catch (const InputError& e) {
-        if (distribution.is_root()) fmt::print(stderr, "rollcontact: error: {}\n", e.what());
-        s = exit_input_error;
-      }
-      status = std::max(status, s);
+/// The files in the order to start them: costliest first by an estimate from the inputs (a long
+/// file started last would leave the other threads idle at the end); unreadable files last,
+/// where their error is reported.
+std::vector<std::size_t> costliest_first(const std::vector<std::string>& inputs) {
+  std::vector<std::size_t> order(inputs.size());
+  std::vector<double> cost(inputs.size(), -1.0);
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    order[k] = k;
+    try {
+      cost[k] = batch::estimated_run_cost(inputs[k]);
+    } catch (const Error&) {
     }
-    return status;
   }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  return order;
+}
+
+/// Two inputs of the same name would write the same outputs into one -o folder.
+void refuse_clashing_outputs(const RunSettings& settings) {
+  if (settings.output_dir.empty()) return;  // each next to its input
+  std::vector<std::string> stems;
+  for (const std::string& input : settings.inputs) {
+    const std::string stem = std::filesystem::path(input).stem().string();
+    if (std::find(stems.begin(), stems.end(), stem) != stems.end())
+      throw InputError(input, 0,
+                       fmt::format("another input named {} writes {}.out into the same output "
+                                   "folder {}",
+                                   stem, stem, settings.output_dir));
+    stems.push_back(stem);
+  }
+}
+
+/// Several files on --threads workers, each file on one thread; one line per file at the end,
+/// in the order given. Exit status: the worst of the files'.
+int run_files_in_parallel(const RunSettings& settings) {
+  const std::size_t n = settings.inputs.size();
   struct FileOutcome {
     int status = exit_ok;
     std::string line;
@@ -166,29 +189,13 @@ int run_files(const RunSettings& settings, batch::Distribution& distribution) {
     progress = [n](std::size_t done) {
       fmt::print(stderr, "\r  {}/{} files   {}", done, n, done == n ? "\n" : "");
     };
-  // Longest first (by an estimate from the inputs): a long file started last would leave the
-  // other threads idle at the end. Unreadable files sort last and report their error there.
-  std::vector<std::size_t> order(n);
-  std::vector<double> cost(n, -1.0);
-  for (std::size_t k = 0; k < n; ++k) {
-    order[k] = k;
-    try {
-      cost[k] = batch::estimated_run_cost(settings.inputs[k]);
-    } catch (const Error&) {
-    }
-  }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  const std::vector<std::size_t> order = costliest_first(settings.inputs);
+  const batch::RunOptions options = solver_run_options(settings);
   batch::parallel_for(
       n, parallel,
       [&](std::size_t, std::size_t j) {
         const std::size_t k = order[j];
         FileOutcome& o = outcomes[k];
-        batch::RunOptions options;
-        options.output_dir = settings.output_dir;
-        options.solve.fft = parse_backend(settings.backend);
-        options.solve.fft_planning =
-            settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
         try {
           const batch::RunResult r = batch::run_input_file(settings.inputs[k], options);
           o.status = r.failed == 0 ? exit_ok : exit_case_failed;
@@ -211,6 +218,26 @@ int run_files(const RunSettings& settings, batch::Distribution& distribution) {
       fmt::print(stderr, "{}\n", o.line);
     else if (!settings.quiet)
       fmt::print("{}\n", o.line);
+  }
+  return status;
+}
+
+/// Several input files: each is run as `run FILE` would run it (its report, JSON and side
+/// files, bytes as from a run of its own), one after the other or, with --threads N, N at a
+/// time. An unreadable file does not stop the others.
+int run_files(const RunSettings& settings, batch::Distribution& distribution) {
+  refuse_clashing_outputs(settings);
+  if (distribution.size() == 1 && settings.threads > 1) return run_files_in_parallel(settings);
+  int status = exit_ok;
+  for (const std::string& input : settings.inputs) {
+    int s = exit_ok;
+    try {
+      s = run_job(input, settings, false, &distribution);
+    } catch (const InputError& e) {
+      if (distribution.is_root()) fmt::print(stderr, "rollcontact: error: {}\n", e.what());
+      s = exit_input_error;
+    }
+    status = std::max(status, s);
   }
   return status;
 }
