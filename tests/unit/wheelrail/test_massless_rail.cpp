@@ -16,6 +16,7 @@
 #include "rollcontact/wheelrail.hpp"
 #include "support/examples.hpp"
 #include "wheelrail/massless_rail.hpp"
+#include "wheelrail_problems.hpp"
 
 namespace rollcontact {
 namespace {
@@ -233,6 +234,31 @@ TEST(MasslessRail, PrescribedPositionSolvesTheVerticalSpring) {
   EXPECT_GT(d.dz_mm, 0.0);
   EXPECT_LT(std::abs(s.force_tr.z - kz * d.dz_mm + fz), 1e-4 * std::abs(s.force_tr.z));
   EXPECT_DOUBLE_EQ(d.residual_z_N, s.force_tr.z - kz * d.dz_mm + fz);
+}
+
+TEST(MasslessRail, LeftWheelIsTheMirrorImage) {
+  // Inputs and outputs are track coordinates: the mirrored left case deflects the rail by −δy.
+  model::WheelRailProblem right = test_support::crowned_rail_problem(300.0, 0.05);
+  right.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  right.vertical = model::VerticalLoading::Force;
+  right.motion.fz_N = 10000.0;
+  right.motion.y_mm = 1.5;
+  right.motion.yaw_rad = 0.004;
+  right = on_massless_rail(right, 2e4, 800.0, 1e5, 200.0);
+  model::WheelRailProblem left = right;
+  left.side = model::WheelSide::Left;
+  left.motion.y_mm = -right.motion.y_mm;
+  left.motion.yaw_rad = -right.motion.yaw_rad;
+  left.track.rail_y0_mm = -right.track.rail_y0_mm;
+  left.massless_rail.fy_N = -right.massless_rail.fy_N;
+  const WheelRailSolution r = WheelsetSolver().solve(right), l = WheelsetSolver().solve(left);
+  ASSERT_TRUE(r.converged && l.converged) << r.message << l.message;
+  EXPECT_NE(r.rail_deflection.dy_mm, 0.0);
+  EXPECT_EQ(l.rail_deflection.dy_mm, -r.rail_deflection.dy_mm);
+  EXPECT_EQ(l.rail_deflection.dz_mm, r.rail_deflection.dz_mm);
+  EXPECT_EQ(l.force_tr.y, -r.force_tr.y);
+  EXPECT_EQ(l.rail_marker_tr.position.y, -r.rail_marker_tr.position.y);
+  EXPECT_EQ(l.rail_deflection.residual_y_N, -r.rail_deflection.residual_y_N);
 }
 
 TEST(MasslessRail, InadmissibleInputsAreRefused) {
