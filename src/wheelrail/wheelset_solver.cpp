@@ -482,10 +482,11 @@ WheelRailSolution WheelsetSolver::Impl::solve_massless_rail(
   const bool force_given = problem.vertical == model::VerticalLoading::Force;
   if (problem.patch.tangential.kind == model::TangentialKind::None)
     throw ProblemError("the massless rail (F=3) requires a tangential problem (T >= 1)");
-  if (!force_given && !(std::abs(m.kz_N_per_mm) >= 1e-10))
+  if (!force_given && !(m.kz_N_per_mm >= 1e-10))
     throw ProblemError(
         "the massless rail (F=3) with z_ws prescribed (N=0) needs a vertical equation: "
-        "|KZRAIL| >= 1e-10 N/mm, or prescribe FZ (N=1)");
+        "KZRAIL >= 1e-10 N/mm (a rail that rises under load has no stable height), or "
+        "prescribe FZ (N=1)");
   RailDeflection d;
   d.active = true;
   d.ky_N_per_mm = m.ky_N_per_mm;
