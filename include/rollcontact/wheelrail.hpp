@@ -61,6 +61,18 @@ struct ProfileMarker {
   double roll_rad = 0.0, yaw_rad = 0.0;
 };
 
+/// The massless rail's state after the case (F=3): the stiffnesses and loads in effect, the
+/// deflections found and what is left of the two balance equations.
+struct RailDeflection {
+  bool active = false;                   ///< the massless rail model was used
+  double ky_N_per_mm = 0.0, fy_N = 0.0;  ///< KY_RAIL, FY_RAIL
+  double kz_N_per_mm = 0.0, fz_N = 0.0;  ///< KZ_RAIL, FZ_RAIL (N=1, KZ = 0: FZ_RAIL = −FZ)
+  double dy_mm = 0.0, dz_mm = 0.0;       ///< DY_DEFL, DZ_DEFL (y in the case's frame, as DYRAIL)
+  /// F_y(tr) − ky·δy + fy and F_z(tr) − kz·δz + fz at the result [N].
+  double residual_y_N = 0.0, residual_z_N = 0.0;
+  int iterations = 0;  ///< lateral iterates (full vertical solves)
+};
+
 struct WheelRailSolution {
   std::vector<WheelRailPatch> patches;   ///< sorted by lateral position; empty: no contact
   Vector3 force_tr, force_ws;            ///< totals on the rail [N]
@@ -70,6 +82,7 @@ struct WheelRailSolution {
   ProfileMarker wheel_marker_ws;         ///< wheel-profile origin in wheelset coordinates
   double z_ws_mm = 0.0;                  ///< wheelset height used (solved when FZ is prescribed)
   std::vector<VerticalForceStep> trace;  ///< N=1 iterates (iteration 0: geometry only)
+  RailDeflection rail_deflection;        ///< F=3 only
   bool converged = true;
   std::string message;                ///< why not converged
   std::vector<std::string> warnings;  ///< adjustments made (grid coarsened, ...)
@@ -98,9 +111,6 @@ class WheelsetSolver {
   struct Impl;
 
  private:
-  /// The case as a right wheel (left inputs already mirrored).
-  WheelRailSolution solve_right_side(const model::WheelRailProblem& problem);
-
   std::unique_ptr<Impl> impl_;
 };
 

@@ -14,8 +14,9 @@ namespace {
 struct PowerLaw {
   std::vector<double> z0, c, f;  ///< start of contact, C_i, (cos δ + f_s sin δ)·C_i factor
   std::vector<double> cosd;
+  double spring = 0.0;  ///< massless rail, N=0: + spring·z [N/mm]
 
-  explicit PowerLaw(const HeightSample& s) {
+  explicit PowerLaw(const HeightSample& s, double spring_N_per_mm = 0.0) : spring(spring_N_per_mm) {
     for (const PatchForceSample& p : s.patches) {
       if (!(p.pen_mm > 0.0) || !(p.fn_N > 0.0)) continue;
       const double cd = std::max(std::cos(p.delta_rad), 0.05);
@@ -29,7 +30,8 @@ struct PowerLaw {
   }
   bool usable() const { return !z0.empty(); }
   void eval(double z, double& fz, double& dfz) const {
-    fz = dfz = 0.0;
+    fz = spring * z;
+    dfz = spring;
     for (std::size_t i = 0; i < z0.size(); ++i) {
       const double pen = (z - z0[i]) * cosd[i];
       if (pen <= 0.0) continue;
@@ -56,6 +58,11 @@ struct PowerLaw {
   }
 };
 
+double force_tolerance(const VerticalForceSettings& st) {
+  const double scale = st.force_scale_N > 0.0 ? st.force_scale_N : st.target_N;
+  return std::max(st.tolerance * scale, 1e-9);
+}
+
 }  // namespace
 
 VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double start_mm,
@@ -64,15 +71,16 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   VerticalForceResult res;
   res.trace.push_back({0, start_mm, 0.0, 0.0});
   double lo = start_mm, hi = std::numeric_limits<double>::infinity();  // F(lo) < FZ < F(hi)
-  double f_lo = -st.target_N, f_hi = 0.0;                              // F − FZ there [N]
+  const double k = st.spring_N_per_mm;
+  double f_lo = k * start_mm - st.target_N, f_hi = 0.0;  // F + k·z − target there [N]
   double z = first_guess_mm;
   double prev_z = start_mm;
   double width_before = std::numeric_limits<double>::infinity();  // bracket two steps ago
   double width_last = width_before;
-  const double f_tol = std::max(st.tolerance * st.target_N, 1e-9);
+  const double f_tol = force_tolerance(st);
   for (int it = 1; it <= std::max(st.max_iterations, 1); ++it) {
     const HeightSample s = solve_at(z);
-    const PowerLaw model(s);
+    const PowerLaw model(s, k);
     double model_f = 0.0, slope = 0.0;
     if (model.usable()) model.eval(z, model_f, slope);
     res.trace.push_back({it, z, s.fz_N, slope});
@@ -81,7 +89,7 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
       res.message = fmt::format("the vertical force is not finite at z_ws = {:g} mm", z);
       return res;
     }
-    const double residual = s.fz_N - st.target_N;
+    const double residual = s.fz_N + k * z - st.target_N;
     if (std::abs(residual) < f_tol) {
       res.converged = true;
       return res;
@@ -135,7 +143,8 @@ VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, 
   constexpr int kMaxRounds = 6;
   VerticalForceResult res;
   res.trace.push_back({0, start_mm, 0.0, 0.0});
-  const double f_tol = std::max(st.tolerance * st.target_N, 1e-9);
+  const double f_tol = force_tolerance(st);
+  const double k = st.spring_N_per_mm;
   int iteration = 0;
   auto append = [&](const VerticalForceResult& part) {
     for (std::size_t k = 1; k < part.trace.size(); ++k) {
@@ -149,7 +158,7 @@ VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, 
   HeightSample s;
   auto full = [&](double zz) {
     s = full_at(zz);
-    const PowerLaw model(s);
+    const PowerLaw model(s, k);
     double model_f = 0.0, slope = 0.0;
     if (model.usable()) model.eval(zz, model_f, slope);
     res.trace.push_back({++iteration, zz, s.fz_N, slope});
@@ -165,7 +174,7 @@ VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, 
     res.message = fmt::format("the vertical force is not finite at z_ws = {:g} mm", z);
     return res;
   }
-  if (std::abs(s.fz_N - st.target_N) < f_tol) {
+  if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
     res.converged = true;
     return res;
   }
@@ -178,7 +187,7 @@ VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, 
     z = estimate.z_mm;
     full(z);
     if (!std::isfinite(s.fz_N)) break;
-    if (std::abs(s.fz_N - st.target_N) < f_tol) {
+    if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
       res.converged = true;
       return res;
     }

@@ -30,6 +30,12 @@ struct VerticalForceSettings {
   double target_N = 0.0;
   double tolerance = 1e-5;  ///< EPS: relative on the force, absolute [mm] on steps of z
   int max_iterations = 30;  ///< MAXNR
+  /// The massless rail with prescribed z_ws (N=0, F=3): z is the wheel height over the undeflected
+  /// rail, z_shift = z_ws − δz, and the equation F_z(z) − kz·(z_ws − z) + fz = 0 is solved as
+  /// F_z(z) + spring·z = target with spring = kz, target = kz·z_ws − fz [N/mm, N]. 0: F_z = target.
+  double spring_N_per_mm = 0.0;
+  /// > 0: the force tolerance is tolerance·force_scale_N instead of tolerance·target [N].
+  double force_scale_N = 0.0;
 };
 
 struct VerticalForceResult {

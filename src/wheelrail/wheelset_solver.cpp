@@ -12,6 +12,7 @@
 #include "rollcontact/wheelrail.hpp"
 #include "wheelrail/contact_search.hpp"
 #include "wheelrail/friction_variation.hpp"
+#include "wheelrail/massless_rail.hpp"
 #include "wheelrail/patch_setup.hpp"
 #include "wheelrail/placed_profiles.hpp"
 #include "wheelrail/vertical_force.hpp"
@@ -25,6 +26,18 @@ using wheelrail::PlacedProfiles;
 using wheelrail::SearchResult;
 using wheelrail::Vec3;
 using wheelrail::WheelsetPose;
+
+namespace {
+
+/// How the vertical equation of one solve is posed (the massless rail changes it).
+struct VerticalOptions {
+  double tolerance = -1.0;  ///< of the vertical iteration; <= 0: EPS of the case
+  /// N=0 with the massless rail: the rail's vertical spring kz [N/mm] and load fz [N]. The wheel
+  /// height over the undeflected rail is iterated and the rail deflection δz follows. 0: none.
+  double rail_kz_N_per_mm = 0.0, rail_fz_N = 0.0;
+};
+
+}  // namespace
 
 struct WheelsetSolver::Impl {
   SolveOptions options;
@@ -62,6 +75,16 @@ struct WheelsetSolver::Impl {
   /// problems alone (an estimate inside the vertical-force iteration).
   WheelRailSolution solve_at(const model::WheelRailProblem& p, double z_ws, bool check_ends,
                              bool normal_only = false);
+
+  /// One case in the case's own frame: mirrored for a left wheel, placed, solved, mirrored back.
+  WheelRailSolution solve_placed(const model::WheelRailProblem& problem, const VerticalOptions& v);
+  /// One case as a right wheel (left inputs already mirrored), after prepare().
+  WheelRailSolution solve_case(const model::WheelRailProblem& p, const VerticalOptions& v);
+  /// The wheelset height for the vertical equation of `st` (N=1, or N=0 with the massless rail).
+  WheelRailSolution solve_for_height(const model::WheelRailProblem& p,
+                                     const wheelrail::VerticalForceSettings& st);
+  /// F=3: the rail deflections around complete solves (spec/wheelrail-advanced.md §2).
+  WheelRailSolution solve_massless_rail(const model::WheelRailProblem& problem);
 
   wheelrail::GapSamples samples;  ///< of the current case
 
@@ -307,85 +330,138 @@ model::WheelRailProblem as_right_side(model::WheelRailProblem p) {
 
 }  // namespace
 
-WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
+WheelRailSolution WheelsetSolver::Impl::solve_placed(const model::WheelRailProblem& problem,
+                                                     const VerticalOptions& v) {
   const model::WheelRailProblem p = as_right_side(problem);
-  impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
   const auto start = std::chrono::steady_clock::now();
-  impl_->prepare(p);
-  impl_->geometry_seconds +=
+  prepare(p);
+  geometry_seconds +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  WheelRailSolution result = solve_right_side(p);
-  result.geometry_seconds = impl_->geometry_seconds;
-  result.patch_solve_seconds = impl_->patch_solve_seconds;
+  WheelRailSolution result = solve_case(p, v);
   if (problem.side == model::WheelSide::Left) mirror_to_left(result);
   return result;
 }
 
-WheelRailSolution WheelsetSolver::solve_right_side(const model::WheelRailProblem& p) {
+WheelRailSolution WheelsetSolver::Impl::solve_for_height(
+    const model::WheelRailProblem& p, const wheelrail::VerticalForceSettings& st) {
   WheelRailSolution result;
-  if (p.vertical == model::VerticalLoading::Position) {
-    result = impl_->solve_at(p, p.motion.z_mm, p.first_of_sequence);
+  // Iterate 0: geometry only, at z_ws = 0: contact starts at the smallest gap.
+  const SearchResult s0 = wheelrail::search_contact(p, *profiles, samples, 0.0);
+  if (!(s0.min_gap_mm < 1e20)) {
+    result.converged = false;
+    result.message = "the wheel and rail profiles do not overlap laterally: no contact possible";
+    return result;
+  }
+  const double z0 = s0.min_gap_mm;
+  const double k = st.spring_N_per_mm;
+  if (k > 0.0 && k * z0 - st.target_N >= 0.0) {
+    // The rail's spring and load lift it clear of the wheel: no contact, F_z = 0.
+    return solve_at(p, st.target_N / k, p.first_of_sequence);
+  }
+  // Iterate 1: Hertz with the wheel's rolling curvature and the gap's lateral curvature.
+  const double a1 = 1.0 / (2.0 * p.wheelset.nominal_radius_mm);
+  const double b1 = std::max(s0.curvature_at_min, 1e-4);
+  const double cos_min = std::max(0.5, std::cos(s0.delta_at_min_rad));
+  const double hertz_force = k > 0.0 ? 1e4 : p.motion.fz_N;
+  double pen = 0.0;
+  try {
+    pen = geometry::hertz_from_curvatures(a1, b1, geometry::HertzLoad::Force, hertz_force,
+                                          contact_modulus(p.patch.bodies))
+              .pen;
+  } catch (const Error&) {
+    pen = 0.01;
+  }
+  wheelrail::VerticalForceSettings settings = st;
+  double z1 = z0 + pen / cos_min;
+  if (k > 0.0) {
+    // The massless rail with z_ws prescribed: the Hertz force C·pen^1.5 (C from 10 kN) against
+    // the spring, C·((z − z0)·cos)^1.5 + k·z = target, by bisection between the start of
+    // contact and the height where the spring alone balances.
+    const double c = 1e4 / std::pow(pen, 1.5);
+    auto g = [&](double z) { return c * std::pow((z - z0) * cos_min, 1.5) + k * z - st.target_N; };
+    double lo = z0, hi = st.target_N / k;
+    for (int it = 0; it < 100 && hi - lo > 1e-12; ++it)
+      (g(0.5 * (lo + hi)) < 0.0 ? lo : hi) = 0.5 * (lo + hi);
+    z1 = std::max(0.5 * (lo + hi), z0 + 1e-3);
+    if (settings.force_scale_N <= 0.0)
+      settings.force_scale_N = std::max(c * std::pow((z1 - z0) * cos_min, 1.5), 1.0);
+  }
+  bool first = p.first_of_sequence;
+  auto full_at = [&](double z) {
+    result = solve_at(p, z, first);
+    first = false;
+    wheelrail::HeightSample h;
+    h.z_mm = z;
+    h.fz_N = result.force_tr.z;
+    for (const WheelRailPatch& w : result.patches)
+      h.patches.push_back(
+          {w.solution.totals.pen, w.contact_angle_rad, w.solution.totals.fn, w.solution.totals.fy});
+    return h;
+  };
+  // F_z = Σ F_n cos δ + F_s sin δ with F_s = fs_ratio·F_n from the last full solve.
+  auto normal_at = [&](double z, const std::vector<double>& fs_ratio) {
+    const WheelRailSolution r = solve_at(p, z, false, true);
+    wheelrail::HeightSample h;
+    h.z_mm = z;
+    for (std::size_t i = 0; i < r.patches.size(); ++i) {
+      const WheelRailPatch& w = r.patches[i];
+      const double fn = w.solution.totals.fn, delta = w.contact_angle_rad;
+      const double fs = (i < fs_ratio.size() ? fs_ratio[i] : 0.0) * fn;
+      h.fz_N += fn * std::cos(delta) + fs * std::sin(delta);
+      h.patches.push_back({w.solution.totals.pen, delta, fn, fs});
+    }
+    return h;
+  };
+  const wheelrail::VerticalForceResult vf =
+      p.patch.tangential.kind == model::TangentialKind::None
+          ? wheelrail::solve_vertical_force(settings, z0, z1, full_at)
+          : wheelrail::solve_vertical_force_split(settings, z0, z1, full_at, normal_at);
+  result.trace = vf.trace;
+  if (!vf.converged) {
+    result.converged = false;
+    result.message = vf.message;
+  } else if (!vf.message.empty()) {
+    result.warnings.push_back(vf.message);
+  }
+  return result;
+}
+
+WheelRailSolution WheelsetSolver::Impl::solve_case(const model::WheelRailProblem& p,
+                                                   const VerticalOptions& v) {
+  WheelRailSolution result;
+  const bool rail_spring =
+      p.vertical == model::VerticalLoading::Position && v.rail_kz_N_per_mm > 0.0;
+  if (p.vertical == model::VerticalLoading::Position && !rail_spring) {
+    result = solve_at(p, p.motion.z_mm, p.first_of_sequence);
   } else {
-    // Iterate 0: geometry only, at z_ws = 0: contact starts at the smallest gap.
-    const SearchResult s0 = wheelrail::search_contact(p, *impl_->profiles, impl_->samples, 0.0);
-    if (!(s0.min_gap_mm < 1e20)) {
-      result.converged = false;
-      result.message = "the wheel and rail profiles do not overlap laterally: no contact possible";
-      return result;
-    }
-    const double z0 = s0.min_gap_mm;
-    // Iterate 1: Hertz with the wheel's rolling curvature and the gap's lateral curvature.
-    const double a1 = 1.0 / (2.0 * p.wheelset.nominal_radius_mm);
-    const double b1 = std::max(s0.curvature_at_min, 1e-4);
-    double pen = 0.0;
-    try {
-      pen = geometry::hertz_from_curvatures(a1, b1, geometry::HertzLoad::Force, p.motion.fz_N,
-                                            contact_modulus(p.patch.bodies))
-                .pen;
-    } catch (const Error&) {
-      pen = 0.01;
-    }
-    const double z1 = z0 + pen / std::max(0.5, std::cos(s0.delta_at_min_rad));
     wheelrail::VerticalForceSettings st;
     st.target_N = p.motion.fz_N;
-    st.tolerance = p.patch.solver.tolerance;
+    st.tolerance = v.tolerance > 0.0 ? v.tolerance : p.patch.solver.tolerance;
     st.max_iterations = p.patch.solver.max_newton_iterations;
-    bool first = p.first_of_sequence;
-    auto full_at = [&](double z) {
-      result = impl_->solve_at(p, z, first);
-      first = false;
-      wheelrail::HeightSample h;
-      h.z_mm = z;
-      h.fz_N = result.force_tr.z;
-      for (const WheelRailPatch& w : result.patches)
-        h.patches.push_back({w.solution.totals.pen, w.contact_angle_rad, w.solution.totals.fn,
-                             w.solution.totals.fy});
-      return h;
-    };
-    // F_z = Σ F_n cos δ + F_s sin δ with F_s = fs_ratio·F_n from the last full solve.
-    auto normal_at = [&](double z, const std::vector<double>& fs_ratio) {
-      const WheelRailSolution r = impl_->solve_at(p, z, false, true);
-      wheelrail::HeightSample h;
-      h.z_mm = z;
-      for (std::size_t k = 0; k < r.patches.size(); ++k) {
-        const WheelRailPatch& w = r.patches[k];
-        const double fn = w.solution.totals.fn, delta = w.contact_angle_rad;
-        const double fs = (k < fs_ratio.size() ? fs_ratio[k] : 0.0) * fn;
-        h.fz_N += fn * std::cos(delta) + fs * std::sin(delta);
-        h.patches.push_back({w.solution.totals.pen, delta, fn, fs});
+    if (rail_spring) {
+      // F_z(z_shift) − kz·(z_ws − z_shift) + fz = 0 for the wheel height z_shift over the
+      // undeflected rail; the rail then sinks by δz = z_ws − z_shift under the wheel at z_ws.
+      st.spring_N_per_mm = v.rail_kz_N_per_mm;
+      st.target_N = v.rail_kz_N_per_mm * p.motion.z_mm - v.rail_fz_N;
+    }
+    result = solve_for_height(p, st);
+    if (rail_spring) {
+      // The same geometry, shifted by δz: solved once more in its true place (the outputs hold
+      // positions in the track), starting from the iteration's last tractions.
+      const double dz = p.motion.z_mm - result.z_ws_mm;
+      model::WheelRailProblem q = p;
+      q.rail_state.dz_mm += dz;
+      prepare(q);
+      WheelRailSolution placed = solve_at(q, p.motion.z_mm, false);
+      placed.trace = std::move(result.trace);
+      placed.warnings.insert(placed.warnings.begin(), result.warnings.begin(),
+                             result.warnings.end());
+      if (!result.converged) {
+        placed.converged = false;
+        placed.message = result.message;
       }
-      return h;
-    };
-    const wheelrail::VerticalForceResult vf =
-        p.patch.tangential.kind == model::TangentialKind::None
-            ? wheelrail::solve_vertical_force(st, z0, z1, full_at)
-            : wheelrail::solve_vertical_force_split(st, z0, z1, full_at, normal_at);
-    result.trace = vf.trace;
-    if (!vf.converged) {
-      result.converged = false;
-      result.message = vf.message;
-    } else if (!vf.message.empty()) {
-      result.warnings.push_back(vf.message);
+      result = std::move(placed);
+      result.rail_deflection.dz_mm = dz;
     }
   }
   // Judged on the state that stands: an iterate of the vertical-force iteration may pass through
@@ -397,6 +473,90 @@ WheelRailSolution WheelsetSolver::solve_right_side(const model::WheelRailProblem
             "not supported yet: module 1 KPEC (B=5) where the gap interpenetrates beyond the "
             "equivalent ellipse (a second lobe; not yet validated: mbench_a22_kpec case 1 "
             "differs)");
+  return result;
+}
+
+WheelRailSolution WheelsetSolver::Impl::solve_massless_rail(
+    const model::WheelRailProblem& problem) {
+  const model::MasslessRail& m = problem.massless_rail;
+  const bool force_given = problem.vertical == model::VerticalLoading::Force;
+  if (problem.patch.tangential.kind == model::TangentialKind::None)
+    throw ProblemError("the massless rail (F=3) requires a tangential problem (T >= 1)");
+  if (!force_given && !(m.kz_N_per_mm >= 1e-10))
+    throw ProblemError(
+        "the massless rail (F=3) with z_ws prescribed (N=0) needs a vertical equation: "
+        "KZRAIL >= 1e-10 N/mm (a rail that rises under load has no stable height), or "
+        "prescribe FZ (N=1)");
+  RailDeflection d;
+  d.active = true;
+  d.ky_N_per_mm = m.ky_N_per_mm;
+  d.fy_N = m.fy_N;
+  d.kz_N_per_mm = m.kz_N_per_mm;
+  d.fz_N = m.fz_N;
+  double dz = 0.0;  // N=1: known directly from the prescribed force
+  if (force_given) {
+    if (std::abs(m.kz_N_per_mm) > 1e-10)
+      dz = (problem.motion.fz_N + m.fz_N) / m.kz_N_per_mm;
+    else
+      d.fz_N = -problem.motion.fz_N;  // a rail without vertical spring carries FZ itself
+  }
+  VerticalOptions v;
+  if (!force_given) {
+    v.rail_kz_N_per_mm = m.kz_N_per_mm;
+    v.rail_fz_N = m.fz_N;
+  }
+  const double eps = problem.patch.solver.tolerance;
+  model::WheelRailProblem q = problem;
+  q.massless_rail.enabled = false;
+  q.rail_state.dz_mm = problem.rail_state.dz_mm + dz;
+  WheelRailSolution result;
+  int solves = 0;
+  bool last_loose = false;
+  auto residual = [&](double dy) {
+    q.rail_state.dy_mm = problem.rail_state.dy_mm + dy;
+    // Looser vertical solves while δy is still far off (spec §2.4); the profile-end check of
+    // the first case applies to its first solve, as in the vertical iteration.
+    v.tolerance = solves < 2 ? std::max(1e-4, 10.0 * eps) : eps;
+    last_loose = v.tolerance > eps;
+    q.first_of_sequence = problem.first_of_sequence && solves == 0;
+    ++solves;
+    result = solve_placed(q, v);
+    return result.force_tr.y - m.ky_N_per_mm * dy + m.fy_N;
+  };
+  wheelrail::LateralRailSettings st;
+  st.stiffness_N_per_mm = m.ky_N_per_mm;
+  st.first_step_mm = m.dystep0_mm > 0.0 ? m.dystep0_mm : 1.0;
+  st.tolerance_N = std::max(1e-6, eps * std::abs(m.fy_N));
+  st.tolerance_mm = eps;
+  st.max_iterations = problem.patch.solver.max_newton_iterations;
+  wheelrail::LateralRailResult lateral = wheelrail::solve_lateral_rail(st, residual);
+  if (last_loose) {
+    // Done within the first two iterates (a stiff rail moves less than EPS): the result stands
+    // with the vertical force to EPS, like any other case.
+    solves = 2;
+    lateral.residual_N = residual(lateral.dy_mm);
+  }
+  d.dy_mm = lateral.dy_mm;
+  d.dz_mm = force_given ? dz : result.rail_deflection.dz_mm;
+  d.residual_y_N = lateral.residual_N;
+  d.residual_z_N = result.force_tr.z - d.kz_N_per_mm * d.dz_mm + d.fz_N;
+  d.iterations = lateral.iterations;
+  result.rail_deflection = d;
+  if (!lateral.converged) {
+    result.converged = false;
+    result.message = lateral.message;
+  } else if (!lateral.message.empty()) {
+    result.warnings.push_back(lateral.message);
+  }
+  return result;
+}
+
+WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
+  impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
+  WheelRailSolution result = problem.massless_rail.enabled ? impl_->solve_massless_rail(problem)
+                                                           : impl_->solve_placed(problem, {});
+  result.geometry_seconds = impl_->geometry_seconds;
+  result.patch_solve_seconds = impl_->patch_solve_seconds;
   return result;
 }
 

@@ -345,4 +345,34 @@ TEST(CntcWheelRail, MomentsAndMarkersFollowTheForcesAndMirrorBetweenWheels) {
   cntc_finalize(&ire);
 }
 
+TEST(CntcWheelRail, MasslessRailDeflectionsAreLocationOutputs18And19) {
+  // examples/massless_rail.inp case 1 (F=3): KYRAIL 5e4, KZRAIL 1e5 N/mm, FZ 10 kN (N=1).
+  const std::string path =
+      (std::filesystem::path(ROLLCONTACT_REPO_EXAMPLES_DIR) / "massless_rail.inp").string();
+  int ire = 71, inp = 1988, len = static_cast<int>(path.size()), ierror = -1, icp = -1;
+  int patch = 1, n24 = 24, n38 = 38;
+  cntc_readinpfile(&ire, &inp, path.c_str(), &len, &ierror);
+  ASSERT_EQ(ierror, 0);
+  cntc_calculate(&ire, &icp, &ierror);
+  ASSERT_EQ(ierror, 0);
+  std::array<double, 24> g{};
+  std::array<double, 38> loc{};
+  cntc_getglobalforces(&ire, &icp, &n24, g.data());
+  cntc_getcontactlocation(&ire, &patch, &n38, loc.data());
+  EXPECT_DOUBLE_EQ(loc[18], 0.1);  // δz = (FZ + FZRAIL)/KZRAIL
+  const double eps = 1e-5;         // EPS of the file: KY·δy = FY(TR) within about KY·EPS
+  EXPECT_NEAR(loc[17], g[1] / 5e4, 2.0 * eps);
+  EXPECT_GT(loc[17], 0.1);
+  // A softer rail through cntc_settrackdimensions Z = 32: [ky, fy, kz, fz, dystep0].
+  int z = 32, n = 5;
+  double rail[5] = {2e4, 0.0, 2e5, 1000.0, 1.0};
+  cntc_settrackdimensions(&ire, &z, &n, rail);
+  cntc_calculate(&ire, &icp, &ierror);
+  ASSERT_EQ(ierror, 0);
+  cntc_getglobalforces(&ire, &icp, &n24, g.data());
+  cntc_getcontactlocation(&ire, &patch, &n38, loc.data());
+  EXPECT_DOUBLE_EQ(loc[18], 11000.0 / 2e5);
+  EXPECT_NEAR(loc[17], g[1] / 2e4, 2.0 * eps);
+}
+
 }  // namespace

@@ -88,6 +88,18 @@ struct WheelsetState {
 
 enum class VerticalLoading { Position, Force };
 
+/// The massless rail model (CONTACT's F=3, spec/wheelrail-advanced.md §2): the rail deflects
+/// laterally by δy and vertically by δz [mm] until the contact force on it, a linear spring and a
+/// prescribed external load balance: F_y(tr) − ky·δy + fy = 0, F_z(tr) − kz·δz + fz = 0. A
+/// time-integrating caller models damping c with k = k_rail + c/Δt, f = f_ext + c·δ_prev/Δt.
+/// δy, δz shift the rail's placement like DYRAIL, DZRAIL (y in the case's own frame, as DYRAIL).
+struct MasslessRail {
+  bool enabled = false;
+  double ky_N_per_mm = 0.0, fy_N = 0.0;  ///< KYRAIL, FYRAIL
+  double kz_N_per_mm = 0.0, fz_N = 0.0;  ///< KZRAIL, FZRAIL
+  double dystep0_mm = 1.0;               ///< DYSTEP0: expected order of δy (first step)
+};
+
 /// Friction that varies with where the contact is (CONTACT's V digit in module 1): Coulomb
 /// coefficients at control points, interpolated linearly in between and constant outside.
 struct FrictionVariation {
@@ -113,6 +125,7 @@ struct WheelRailProblem {
   WheelsetGeometry wheelset;
   WheelsetState motion;
   VerticalLoading vertical = VerticalLoading::Force;
+  MasslessRail massless_rail;  ///< F=3; disabled: a rigid rail (δy = δz = 0)
   ContactSearchSettings search;
   /// The first case of a sequence: contact at a profile end is an error (misplaced wheel).
   bool first_of_sequence = true;

@@ -365,9 +365,9 @@ CNTC_EXPORT void cntc_getcontactlocation(int* ire, int* icp, int* lenarr, double
                                w.pressure_centre_x_mm / len,
                                w.pressure_centre_y_mm / len,  // 15-16
                                0.0,
-                               0.0,
-                               0.0,
-                               0.0,  // 17; 18-19 rail deflections (no massless rail yet); 20
+                               s.rail_deflection.dy_mm / len,
+                               s.rail_deflection.dz_mm / len,
+                               0.0,  // 17; 18-19 massless rail deflections (no side sign); 20
                                wm.position.x / len,
                                wm.position.y / len,
                                wm.position.z / len,  // 21-23

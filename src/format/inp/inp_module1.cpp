@@ -137,6 +137,8 @@ void check_digits(CaseContext& c) {
                               prev.n, d.n));
   }
   if (d.f == 1 && d.n != 1) in.fail(c.l1, "F=1 (prescribed FX_WS) requires N=1");
+  if (d.f == 3 && d.t == 0)
+    in.fail(c.l1, "F=3 (massless rail) requires a tangential problem: T=0 is not allowed");
   if (d.c == 0) {
     c.p.source.warnings.push_back(
         "C=0 overridden to 1 (influence coefficients are recomputed when needed)");
@@ -305,7 +307,8 @@ void read_track_line(InpStream& in, WheelRailRecord& p) {
 }
 
 /// Lines 16-17 (Z=2, 3): rail deviations and, with F=3, the massless rail's stiffness.
-void read_rail_deviations(InpStream& in, const ControlDigits& d, WheelRailRecord& p) {
+/// Returns the line of the massless rail's data (0 when F≠3).
+int read_rail_deviations(InpStream& in, const ControlDigits& d, WheelRailRecord& p) {
   const GroupValues g = in.read_group({{"DYRAIL", kReal},
                                        {"DZRAIL", kReal},
                                        {"DROLLR", kAngle},
@@ -324,7 +327,9 @@ void read_rail_deviations(InpStream& in, const ControlDigits& d, WheelRailRecord
                                         "the massless rail line (KYRAIL FYRAIL KZRAIL FZRAIL)");
     p.massless_rail = {m.real(0), m.real(1), m.real(2), m.real(3), m.has(4) ? m.real(4) : 1.0};
     p.has_massless_rail = true;
+    return m.line(2);
   }
+  return 0;
 }
 
 /// Line 18 (E=3, 5): wheelset dimensions (the wheel profile line follows).
@@ -453,9 +458,15 @@ WheelRailRecord Module1Reader::read_case(InpStream& in, int reid, int module_lin
     p.rail = read_profile_line(in, /*is_wheel=*/false, p.track.gaught, p.source.warnings);
     st.has_rail = true;
   }
-  if (d.z == 2 || d.z == 3) read_rail_deviations(in, d, p);
+  const int massless_line = d.z == 2 || d.z == 3 ? read_rail_deviations(in, d, p) : 0;
   if (d.f == 3 && !p.has_massless_rail) {
     in.fail(c.l1, "F=3 (massless rail) needs the rail stiffness line: use Z=2 or 3");
+  }
+  if (d.f == 3 && d.n != 1 && !(std::abs(p.massless_rail.kz) >= 1e-10)) {
+    // Without a vertical spring nothing fixes δz when z_ws is prescribed (spec §2.2).
+    in.fail(d.z == 2 || d.z == 3 ? massless_line : c.l1,
+            "F=3 (massless rail) with N=0 needs a vertical equation: KZRAIL must not be 0 "
+            "(or prescribe the force, N=1)");
   }
 
   // Lines 18-22: wheelset, wheel profile, position, velocity, flexible wheel.

@@ -72,7 +72,13 @@ void check_supported(const WheelRailRecord& r) {
   if (r.discretisation.method != 2)
     not_supported(fmt::format("contact search D={}", r.discretisation.method));
   if (d.t == 1 || d.t == 2) not_supported(fmt::format("transient rolling or shifts T={}", d.t));
-  if (d.f != 0) not_supported(fmt::format("prescribed forces or massless rail F={}", d.f));
+  // F=3 (massless rail) is solved; F=1, 2 (experimental in CONTACT: FX_WS or MY_WS prescribed
+  // with ω = VPITCH as the unknown) are not implemented.
+  if (d.f == 1 || d.f == 2)
+    not_supported(
+        fmt::format("prescribed longitudinal force or moment F={} (experimental in "
+                    "CONTACT)",
+                    d.f));
   // KPEC/ANALYN (B=5, 6) reproduce mbench_a22_kpec cases 2-5; the wheel/rail solver refuses
   // the patches where they do not (cases 1 and 6; model::WheelRailProblem::validated_only).
   // The wheel/rail solver interpolates V=1, 2 friction per patch (model::FrictionVariation); the
@@ -121,6 +127,12 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   p.motion = {m.s,  m.y,  m.z,  m.fz,    m.roll, m.yaw,   m.pitch,
               m.vs, m.vy, m.vz, m.vroll, m.vyaw, m.vpitch};
   p.vertical = r.digits.n == 1 ? model::VerticalLoading::Force : model::VerticalLoading::Position;
+  if (r.digits.f == 3) {
+    if (!r.has_massless_rail)
+      throw ProblemError("F=3 (massless rail) without the rail stiffness line");
+    const MasslessRail& mr = r.massless_rail;
+    p.massless_rail = {true, mr.ky, mr.fy, mr.kz, mr.fz, mr.dystep0};
+  }
   const WheelRailDiscretisation& ds = r.discretisation;
   p.search = {ds.dx,     ds.ds,     ds.dqrel,  ds.a_sep,  ds.d_sep,
               ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max};

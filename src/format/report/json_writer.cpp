@@ -69,6 +69,16 @@ nlohmann::json wheelrail_case_to_json(const CaseRecord& identity,
   j["z_ws"] = solution.z_ws_mm;
   j["force_tr"] = vec(solution.force_tr);
   j["force_ws"] = vec(solution.force_ws);
+  if (const RailDeflection& rd = solution.rail_deflection; rd.active)
+    j["rail_deflection"] = {{"dy", rd.dy_mm},
+                            {"dz", rd.dz_mm},
+                            {"ky", rd.ky_N_per_mm},
+                            {"fy", rd.fy_N},
+                            {"kz", rd.kz_N_per_mm},
+                            {"fz", rd.fz_N},
+                            {"residual_y", rd.residual_y_N},
+                            {"residual_z", rd.residual_z_N},
+                            {"iterations", rd.iterations}};
   nlohmann::json trace = nlohmann::json::array();
   for (const VerticalForceStep& s : solution.trace)
     trace.push_back({{"iteration", s.iteration},

@@ -59,6 +59,14 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
   const WheelRailDiscretisation& ds = r.discretisation;
   line(os, "  " + sig(ds.dx) + sig(ds.ds) + sig(ds.dqrel) + sig(ds.a_sep) + sig(ds.d_sep) +
                sig(ds.d_comb));
+  const RailDeflection& rd = s.rail_deflection;
+  if (rd.active && (d.z == 2 || d.z == 3)) {  // with the rail deviations (spec §2.8)
+    line(os, "");
+    line(os, " MASSLESS RAIL DEFLECTION");
+    line(os, "     KY_RAIL     DY_DEFL     FY_RAIL     KZ_RAIL     DZ_DEFL     FZ_RAIL");
+    line(os, "  " + f4(rd.ky_N_per_mm) + f4(rd.dy_mm) + sig(rd.fy_N) + f4(rd.kz_N_per_mm) +
+                 f4(rd.dz_mm) + sig(rd.fz_N));
+  }
   line(os, "");
   line(os, " WHEEL-SET POSITION AND VELOCITY");
   line(os, "     S_WS        Y_WS        Z_WS        ROLL_WS     YAW_WS      PITCH_WS");

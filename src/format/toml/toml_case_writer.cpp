@@ -494,11 +494,11 @@ class WheelRailWriter {
 
   void write() {
     const ControlDigits& d = r_.digits;
-    if (r_.variable_friction.v != 0 || r_.has_massless_rail || d.e == 4 || d.e == 5 ||
+    if (r_.variable_friction.v != 0 || d.f == 1 || d.f == 2 || d.e == 4 || d.e == 5 ||
         r_.rail.sliced || r_.wheel.sliced)
       throw Error(
-          fmt::format("case {}: variable friction, the massless rail, flexible wheelsets "
-                      "and variable profiles have no TOML case-file equivalent yet",
+          fmt::format("case {}: variable friction, prescribed FX_WS/MY_WS (F=1, 2), flexible "
+                      "wheelsets and variable profiles have no TOML case-file equivalent yet",
                       r_.case_number));
     out_ += "\n[[case]]\n";
     if (!r_.source.file.empty())
@@ -582,6 +582,15 @@ class WheelRailWriter {
     line("vy_mm_per_s", real(dev.vy));
     line("vz_mm_per_s", real(dev.vz));
     line("vroll_rad_per_s", real(dev.vroll));
+    if (r_.digits.f == 3 && r_.has_massless_rail) {
+      const MasslessRail& mr = r_.massless_rail;
+      table("case.wheel_rail.massless_rail");
+      line("ky_N_per_mm", real(mr.ky));
+      line("fy_N", real(mr.fy));
+      line("kz_N_per_mm", real(mr.kz));
+      line("fz_N", real(mr.fz));
+      line("dy_step_mm", real(mr.dystep0));
+    }
     profile("rail", r_.rail);
     const WheelsetDimensions& w = r_.wheelset;
     table("case.wheel_rail.wheelset");

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <numbers>
 #include <string>
 
@@ -180,6 +181,26 @@ void read_motion(Table& w, WheelRailRecord& r) {
   v.finish();
 }
 
+/// The massless rail (F=3, spec/wheelrail-advanced.md §2): its springs and loads.
+void read_massless_rail(Table& w, WheelRailRecord& r) {
+  auto t = w.opt_table("massless_rail");
+  if (!t) return;
+  MasslessRail& m = r.massless_rail;
+  m.ky = t->real("ky_N_per_mm");
+  m.fy = t->real_or("fy_N", 0.0);
+  m.kz = t->real_or("kz_N_per_mm", 0.0);
+  m.fz = t->real_or("fz_N", 0.0);
+  m.dystep0 = t->real_or("dy_step_mm", 1.0);
+  if (!(m.dystep0 > 0.0)) t->fail_key("dy_step_mm", "must be positive");
+  if (r.digits.t == 0) t->fail("the massless rail needs a tangential problem (not \"none\")");
+  if (r.digits.n != 1 && !(std::abs(m.kz) >= 1e-10))
+    t->fail_key("kz_N_per_mm",
+                "must not be 0 with position.z_mm given (or give vertical_force_N instead)");
+  t->finish();
+  r.digits.f = 3;
+  r.has_massless_rail = true;
+}
+
 }  // namespace
 
 WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::string& file,
@@ -237,6 +258,7 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   read_wheelset(w, r);
   r.wheel = read_profile(w, "wheel", true, ctx, r.source.warnings);
   read_motion(w, r);
+  read_massless_rail(w, r);
   w.finish();
   c.finish();
   return r;

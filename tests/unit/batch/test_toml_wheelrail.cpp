@@ -104,5 +104,47 @@ TEST(TomlWheelRail, ConvertedBenchmarkFileGivesTheSameResults) {
   }
 }
 
+TEST(TomlWheelRail, MasslessRailRoundTrip) {
+  // examples/massless_rail.inp (F=3) -> TOML -> the same rail data and the same deflections.
+  const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
+  const auto from_inp = format::read_input_cases(repo_examples / "massless_rail.inp");
+  const std::string text = format::write_toml_input_string(from_inp, repo_examples);
+  EXPECT_NE(text.find("[case.wheel_rail.massless_rail]"), std::string::npos);
+  const auto from_toml = format::read_toml_input_string(text, "converted.toml", repo_examples);
+  ASSERT_EQ(from_toml.size(), from_inp.size());
+  for (std::size_t k = 0; k < from_inp.size(); ++k) {
+    const auto& wi = std::get<format::WheelRailRecord>(from_inp[k]);
+    const auto& wt = std::get<format::WheelRailRecord>(from_toml[k]);
+    EXPECT_EQ(wt.digits.f, 3);
+    ASSERT_TRUE(wt.has_massless_rail);
+    EXPECT_EQ(wt.massless_rail.ky, wi.massless_rail.ky);
+    EXPECT_EQ(wt.massless_rail.fy, wi.massless_rail.fy);
+    EXPECT_EQ(wt.massless_rail.kz, wi.massless_rail.kz);
+    EXPECT_EQ(wt.massless_rail.fz, wi.massless_rail.fz);
+    EXPECT_EQ(wt.massless_rail.dystep0, wi.massless_rail.dystep0);
+  }
+  const auto& w0 = std::get<format::WheelRailRecord>(from_inp[0]);
+  const WheelRailSolution si = WheelsetSolver().solve(format::to_wheelrail_problem(w0));
+  const WheelRailSolution st = WheelsetSolver().solve(
+      format::to_wheelrail_problem(std::get<format::WheelRailRecord>(from_toml[0])));
+  ASSERT_TRUE(si.converged) << si.message;
+  EXPECT_EQ(st.rail_deflection.dy_mm, si.rail_deflection.dy_mm);
+  EXPECT_EQ(st.force_tr.y, si.force_tr.y);
+  // A prescribed position without a vertical rail spring has no vertical equation.
+  std::string bad = text;
+  bad.replace(bad.find("kz_N_per_mm = 100000.0"), 22, "kz_N_per_mm = 0.0");
+  const std::string force_line = "vertical_force_N = 10000.0";
+  ASSERT_NE(bad.find(force_line), std::string::npos);
+  bad.replace(bad.find(force_line), force_line.size(), "");
+  bad.replace(bad.find("y_mm = 9.0"), 10, "y_mm = 9.0\nz_mm = -7.0");
+  try {
+    (void)format::read_toml_input_string(bad, "bad.toml", repo_examples);
+    ADD_FAILURE() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("kz_N_per_mm"), std::string::npos) << e.what();
+    EXPECT_GT(e.line(), 0);
+  }
+}
+
 }  // namespace
 }  // namespace rollcontact::batch

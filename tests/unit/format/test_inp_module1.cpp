@@ -8,6 +8,8 @@
 #include <fstream>
 #include <numbers>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -118,6 +120,38 @@ TEST(InpModule1, KeepSemanticsAndOverrides) {
   const format::WheelRailRecord& c3 = wr(cases, 2);
   EXPECT_DOUBLE_EQ(c3.motion.y, 2.5);
   EXPECT_EQ(c3.case_number, 3);
+}
+
+/// The line and message of the InputError reading `text` throws (0, "" if none).
+std::pair<int, std::string> input_error(const std::string& text) {
+  try {
+    read(text);
+  } catch (const InputError& e) {
+    return {e.line(), e.message()};
+  }
+  return {0, ""};
+}
+
+/// first_case() with F=3 and the massless rail line after the rail deviations (line 17).
+std::string massless_case(const std::string& w1, const std::string& rail_line) {
+  std::string text = first_case(w1);
+  const std::string deviations = "  0.1 0.2 1d 0.3 0.4 2d\n";
+  text.insert(text.find(deviations) + deviations.size(), rail_line);
+  return text + " 0 MODULE\n";
+}
+
+TEST(InpModule1, MasslessRailNeedsTangentialAndVerticalEquations) {
+  // Accepted: T=3, N=1 (δz from FZ), and N=0 with KZRAIL > 0.
+  EXPECT_EQ(input_error(massless_case("1203130", "  1e4 0 0 0\n")).first, 0);
+  EXPECT_EQ(input_error(massless_case("1203030", "  1e4 0 1e5 0 0.5\n")).first, 0);
+  // T=0: refused at the control line (line 2 of the text).
+  auto [line, message] = input_error(massless_case("1200130", "  1e4 0 1e5 0\n"));
+  EXPECT_EQ(line, 2);
+  EXPECT_NE(message.find("T=0"), std::string::npos) << message;
+  // N=0 without a vertical spring: refused at the massless rail line (line 12).
+  std::tie(line, message) = input_error(massless_case("1203030", "  1e4 0 0 0\n"));
+  EXPECT_EQ(line, 12);
+  EXPECT_NE(message.find("KZRAIL"), std::string::npos) << message;
 }
 
 TEST(InpModule1, RollerRigMasslessRailAndFlexibleWheelset) {

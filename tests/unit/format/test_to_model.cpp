@@ -5,9 +5,11 @@
 
 #include <filesystem>
 #include <string>
+#include <variant>
 
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/to_model.hpp"
+#include "format/inp/to_wheelrail.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -239,8 +241,12 @@ TEST(ToModel, EveryRepositoryExampleConverts) {
   for (const auto& entry : std::filesystem::directory_iterator(kRepoExamples)) {
     if (entry.path().extension() != ".inp") continue;
     SCOPED_TRACE(entry.path().filename().string());
-    for (const CaseRecord& r : read_inp_file(entry.path()))
-      EXPECT_NO_THROW((void)to_patch_problem(r));
+    // Module 3 into patch problems, module 1 (massless_rail.inp) into wheel/rail problems.
+    for (const InputCase& c : read_input_cases(entry.path())) {
+      if (const auto* r = std::get_if<CaseRecord>(&c)) EXPECT_NO_THROW((void)to_patch_problem(*r));
+      if (const auto* w = std::get_if<WheelRailRecord>(&c))
+        EXPECT_NO_THROW((void)to_wheelrail_problem(*w));
+    }
   }
 }
 
