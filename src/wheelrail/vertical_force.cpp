@@ -147,8 +147,8 @@ VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, 
   const double k = st.spring_N_per_mm;
   int iteration = 0;
   auto append = [&](const VerticalForceResult& part) {
-    for (std::size_t k = 1; k < part.trace.size(); ++k) {
-      VerticalForceStep step = part.trace[k];
+    for (std::size_t j = 1; j < part.trace.size(); ++j) {
+      VerticalForceStep step = part.trace[j];
       step.iteration = ++iteration;
       res.trace.push_back(step);
     }

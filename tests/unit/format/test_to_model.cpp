@@ -243,9 +243,12 @@ TEST(ToModel, EveryRepositoryExampleConverts) {
     SCOPED_TRACE(entry.path().filename().string());
     // Module 3 into patch problems, module 1 (massless_rail.inp) into wheel/rail problems.
     for (const InputCase& c : read_input_cases(entry.path())) {
-      if (const auto* r = std::get_if<CaseRecord>(&c)) EXPECT_NO_THROW((void)to_patch_problem(*r));
-      if (const auto* w = std::get_if<WheelRailRecord>(&c))
+      if (const auto* r = std::get_if<CaseRecord>(&c)) {
+        EXPECT_NO_THROW((void)to_patch_problem(*r));
+      }
+      if (const auto* w = std::get_if<WheelRailRecord>(&c)) {
         EXPECT_NO_THROW((void)to_wheelrail_problem(*w));
+      }
     }
   }
 }
