@@ -9,6 +9,7 @@
 
 #include "rollcontact/grid.hpp"
 #include "rollcontact/model/influence_table.hpp"
+#include "rollcontact/model/traction_elements.hpp"
 
 namespace rollcontact {
 
@@ -46,6 +47,9 @@ struct CombinedMaterial {
   /// Coefficients from a file (C=9) instead of the closed forms; g still divides them (they are
   /// tabulated without 1/G). Null: the closed forms of g, nu, k.
   std::shared_ptr<const model::InfluenceTable> table{};
+  /// The traction elements of the closed forms: piecewise constant (C=2) or bilinear (C=3,
+  /// elastic/bilinear_kernel.hpp). Ignored with a table.
+  model::TractionElements elements = model::TractionElements::piecewise_constant;
 
   bool viscoelastic() const noexcept {
     return viscous[0].weight != 0.0 || viscous[1].weight != 0.0;

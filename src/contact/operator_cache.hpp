@@ -62,7 +62,8 @@ struct OperatorKey {
            a.material.layer_compliance == b.material.layer_compliance &&
            a.material.normal_layer_compliance == b.material.normal_layer_compliance &&
            a.material.viscous == b.material.viscous && a.material.table == b.material.table &&
-           a.kind == b.kind && a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
+           a.material.elements == b.material.elements && a.kind == b.kind &&
+           a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
            elastic::same_interaction(a.interaction, b.interaction);
   }
 };

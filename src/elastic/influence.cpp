@@ -18,6 +18,7 @@
 #include <limits>
 #include <vector>
 
+#include "elastic/bilinear_kernel.hpp"
 #include "elastic/table_kernel.hpp"
 #include "elastic/viscous_kernel.hpp"
 #include "rollcontact/errors.hpp"
@@ -389,6 +390,12 @@ std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& g
       out.push_back(table_kernel(c, grid, material, shift_x, shift_y));
       finish_kernel(c, grid, material, shift_x, shift_y, out.back());
     }
+    return out;
+  }
+  if (material.elements == model::TractionElements::bilinear) {
+    std::vector<Kernel> out = bilinear_kernels(cs, grid, material, shift_x, shift_y);
+    for (std::size_t q = 0; q < cs.size(); ++q)
+      finish_kernel(cs[q], grid, material, shift_x, shift_y, out[q]);
     return out;
   }
   const Real floor = Real(grid.dx) * 1e-10L;

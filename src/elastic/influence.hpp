@@ -60,7 +60,8 @@ inline bool is_coupled(const CombinedMaterial& material) noexcept {
 /// Tabulates component c of the influence matrix for the grid and material (divided by G),
 /// including an interfacial layer's compliance and the viscous parts of viscoelastic bodies
 /// (elastic/viscous_kernel.hpp). With material.table (C=9) the coefficients come from the table
-/// (elastic/table_kernel.hpp) instead of the closed forms.
+/// (elastic/table_kernel.hpp) instead of the closed forms; with material.elements bilinear (C=3)
+/// from the bilinear elements' closed forms (elastic/bilinear_kernel.hpp).
 Kernel make_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                    double shift_x = 0.0, double shift_y = 0.0);
 

@@ -41,6 +41,7 @@ class KernelLibrary {
     Component c;
     double dx, dy, g, nu, k, layer, normal_layer, shift_x, shift_y;
     std::array<ViscousCompliance, 2> viscous;
+    model::TractionElements elements;
     Kernel kernel;
   };
   static bool matches(const Entry& e, Component c, const Grid& grid, const CombinedMaterial& m,

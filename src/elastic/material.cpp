@@ -58,6 +58,7 @@ CombinedMaterial combine_bodies(const model::Bodies& b, double velocity_mm_s) {
   if (b.has_layer) m.layer_compliance = b.layer.compliance_mm3_N();
   m.normal_layer_compliance = b.normal_layer_flexibility_mm3_N;
   m.table = b.influence_table;
+  m.elements = b.traction_elements;
   if (!b.viscoelastic) return m;
   for (const model::ViscoelasticBody* v : {&b.viscous1, &b.viscous2})
     if (!(v->creep_ratio >= 0.0 && v->relaxation_time_s >= 0.0))

@@ -5,6 +5,7 @@
 #include <complex>
 #include <vector>
 
+#include "elastic/bilinear_kernel.hpp"
 #include "elastic/influence.hpp"
 
 namespace rollcontact::normal {
@@ -30,6 +31,10 @@ CirculantPreconditioner::CirculantPreconditioner(const Grid& grid, const Combine
       nx_(core::good_fft_size(grid.mx)),
       ny_(core::good_fft_size(grid.my)),
       engine_(core::make_fft_engine(backend, nx_, ny_, planning)) {
+  // Offsets beyond the kernel from the closed forms of the same traction elements.
+  const auto coefficient = material.elements == model::TractionElements::bilinear
+                               ? &elastic::bilinear_coefficient
+                               : &elastic::influence_coefficient;
   // Wrapped kernel: offset i is represented by the nearest periodic image (|i| ≤ n/2).
   double* work = engine_->real_data();
   for (int j = 0; j < ny_; ++j) {
@@ -39,11 +44,10 @@ CirculantPreconditioner::CirculantPreconditioner(const Grid& grid, const Combine
       const bool tabulated =
           kernel != nullptr && std::abs(ox) < kernel->mx() && std::abs(oy) < kernel->my();
       work[static_cast<std::size_t>(i) + static_cast<std::size_t>(nx_) * j] =
-          tabulated
-              ? kernel->at(ox, oy)
-              : elastic::influence_coefficient(elastic::Component::nn, ox * grid.dx, oy * grid.dy,
-                                               grid.dx, grid.dy, material.nu, 0.0) /
-                    material.g;
+          tabulated ? kernel->at(ox, oy)
+                    : coefficient(elastic::Component::nn, ox * grid.dx, oy * grid.dy, grid.dx,
+                                  grid.dy, material.nu, 0.0) /
+                          material.g;
     }
   }
   const double diagonal = work[0];

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "rollcontact/model/influence_table.hpp"
+#include "rollcontact/model/traction_elements.hpp"
 
 namespace rollcontact::model {
 
@@ -90,6 +91,8 @@ struct Bodies {
   /// the piecewise-constant half-space (C=2); null: the closed forms. Shared, not copied, between
   /// the cases that use one file.
   std::shared_ptr<const InfluenceTable> influence_table;
+  /// CONTACT C=3: bilinear traction elements instead of piecewise constant ones (C=2).
+  TractionElements traction_elements = TractionElements::piecewise_constant;
 };
 
 }  // namespace rollcontact::model

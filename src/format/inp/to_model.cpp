@@ -161,7 +161,13 @@ void check_supported(const CaseRecord& record) {
   if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
   // The coefficients in effect (C=0, 1 keep the previous case's).
   const int c = record.materials.influence_type;
-  if (c == 3 || c == 4) not_supported(fmt::format("influence coefficients C={}", c));
+  if (c == 4) not_supported(fmt::format("influence coefficients C={}", c));
+  // Bilinear elements (C=3): the viscous parts of M=1 and the subsurface stresses integrate
+  // piecewise-constant tractions, which would not match the bilinear surface solution.
+  if (c == 3 && d.m == 1)
+    not_supported("bilinear influence coefficients C=3 with viscoelastic bodies M=1");
+  if (c == 3 && d.s >= 1)
+    not_supported("subsurface stresses (S>=1) with bilinear influence coefficients C=3");
   if (c == 9 && d.m == 1)
     not_supported("influence coefficients from a file (C=9) with viscoelastic bodies M=1");
   if (d.h != 0 && d.t != 0 && d.t != 3)
@@ -192,6 +198,8 @@ model::PatchProblem to_patch_problem(const CaseRecord& record) {
     if (ext.known && ext.dx > 0.0 && ext.dy > 0.0) element = ElementSize{ext.dx, ext.dy};
     p.bodies.influence_table = read_influence_file(record.materials.influence_file, element);
   }
+  if (record.materials.influence_type == 3)
+    p.bodies.traction_elements = model::TractionElements::bilinear;
   const Friction& f = record.friction;
   p.friction = to_model_friction(f.law, {f.fstat, f.fkin, f.params}, f.memdst, f.mem_s0);
   p.normal = normal_of(record);

@@ -157,7 +157,19 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r = basic_record();
   r.digits.c = 3;
   r.materials.influence_type = 3;
-  EXPECT_EQ(message_of(r), "not supported yet: influence coefficients C=3");
+  EXPECT_EQ(message_of(r), "(accepted)");
+  EXPECT_EQ(to_patch_problem(r).bodies.traction_elements, model::TractionElements::bilinear);
+  r.digits.m = 1;
+  r.digits.t = 3;
+  EXPECT_EQ(message_of(r),
+            "not supported yet: bilinear influence coefficients C=3 with viscoelastic bodies M=1");
+  r = basic_record();
+  r.digits.c = 3;
+  r.materials.influence_type = 3;
+  r.digits.s = 1;
+  EXPECT_EQ(message_of(r),
+            "not supported yet: subsurface stresses (S>=1) with bilinear influence coefficients "
+            "C=3");
   r = basic_record();
   r.digits.c = 1;  // keeps the coefficients of the previous case: what counts is the type kept
   r.materials.influence_type = 4;
