@@ -73,8 +73,8 @@ RigidShift rigid_shift(const Grid& grid, const model::PatchProblem& problem,
     for (int ix = 0; ix < grid.mx; ++ix) {
       const double x = grid.x_centre(ix) - k.spin_centre_x_mm + off_x;
       const std::size_t i = grid.index(ix, iy);
-      double wx = cksi - cphi * y;
-      double wy = ceta + cphi * x;
+      double wx = k.spin_terms == model::SpinInRigidSlip::LateralOnly ? cksi : cksi - cphi * y;
+      double wy = k.spin_terms == model::SpinInRigidSlip::LongitudinalOnly ? ceta : ceta + cphi * x;
       if (extra) {
         wx += k.extra_slip[2 * i];
         wy += k.extra_slip[2 * i + 1];

@@ -53,6 +53,14 @@ struct Creepages {
   double spin_rad_per_mm = 0.0;  ///< φ [rad/mm] (shift: rotation [rad])
 };
 
+/// Which rigid-slip components carry the spin term (CONTACT's E = 2, 3, experimental):
+/// w_x = ξ − φ·y, w_y = η + φ·x with both, or one of them without its φ term.
+enum class SpinInRigidSlip {
+  Both,              ///< E = 0, 1, 9
+  LongitudinalOnly,  ///< E = 2: w_y = η
+  LateralOnly,       ///< E = 3: w_x = ξ
+};
+
 struct TangentialLoading {
   TangentialKind kind = TangentialKind::None;
   TangentialPrescribed prescribed = TangentialPrescribed::Creepages;
@@ -63,6 +71,7 @@ struct TangentialLoading {
   /// Extra rigid slip per element, interleaved (x, y) per element with ix fastest (2·mx·my
   /// values), in the unit of the creepages; empty: none.
   std::vector<double> extra_slip;
+  SpinInRigidSlip spin_terms = SpinInRigidSlip::Both;
 };
 
 /// The rolling motion (rolling problems only).

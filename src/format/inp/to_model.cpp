@@ -96,6 +96,8 @@ model::TangentialLoading tangential_of(const CaseRecord& r) {
   t.spin_centre_y_mm = k.spinyo;
   // Only the E=9 digit itself applies the per-element values (E=1 "keep" does not).
   if (r.digits.e == 9) t.extra_slip = k.extra_slip;
+  if (r.digits.e == 2) t.spin_terms = model::SpinInRigidSlip::LongitudinalOnly;
+  if (r.digits.e == 3) t.spin_terms = model::SpinInRigidSlip::LateralOnly;
   return t;
 }
 
@@ -172,7 +174,10 @@ void check_supported(const CaseRecord& record) {
     not_supported("influence coefficients from a file (C=9) with viscoelastic bodies M=1");
   if (d.h != 0 && d.t != 0 && d.t != 3)
     not_supported(fmt::format("temperature H={} with T={} (steady rolling only)", d.h, d.t));
-  if (d.e == 2 || d.e == 3) not_supported(fmt::format("extra rigid slip E={}", d.e));
+  // FaStrip (M=5) takes the spin into its strips itself, not through the rigid slip.
+  if ((d.e == 2 || d.e == 3) && d.m == 5)
+    not_supported(
+        fmt::format("the spin term dropped from the rigid slip (E={}) with FaStrip M=5", d.e));
   if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
   if ((d.t == 1 || d.t == 2) && record.friction.law == 6)
     not_supported(fmt::format("friction law L={} with T={}", record.friction.law, d.t));

@@ -115,6 +115,14 @@ TEST(ToModel, RelaxationAndExtraSlipOnlyWhereTheirDigitsApply) {
   r.digits.e = 9;
   p = to_patch_problem(r);
   EXPECT_EQ(p.tangential.extra_slip.size(), 2u);
+  EXPECT_EQ(p.tangential.spin_terms, model::SpinInRigidSlip::Both);
+  r.digits.e = 2;
+  EXPECT_EQ(to_patch_problem(r).tangential.spin_terms, model::SpinInRigidSlip::LongitudinalOnly);
+  r.digits.e = 3;
+  EXPECT_EQ(to_patch_problem(r).tangential.spin_terms, model::SpinInRigidSlip::LateralOnly);
+  r.digits.m = 5;
+  r.digits.t = 3;
+  EXPECT_THROW((void)to_patch_problem(r), NotSupportedError);
 }
 
 TEST(ToModel, SubsurfacePointsOnlyWithTheSDigit) {
