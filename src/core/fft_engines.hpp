@@ -15,7 +15,7 @@ std::unique_ptr<FftEngine> make_fftw_engine(int n_fast, int n_slow, FftPlanning 
 std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int n_fast, int n_slow,
                                                             FftPlanning planning);
 
-/// Whether this process made an FFTW plan that no wisdom held (core/fft_wisdom.hpp).
+/// Whether this process made an FFTW plan that no wisdom held (rollcontact/fft_plan_cache.hpp).
 bool fftw_planned_beyond_wisdom() noexcept;
 
 /// Single-precision wisdom (FFTW text) to read before the first single-precision plan.

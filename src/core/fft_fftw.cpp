@@ -10,7 +10,6 @@
 #include <fftw3.h>
 
 #include <algorithm>
-#include <atomic>
 #include <complex>
 #include <cstring>
 #include <mutex>
@@ -22,30 +21,25 @@ namespace rollcontact::core::detail {
 
 namespace {
 
-/// FFTW's planner (plan creation and destruction) is not thread-safe; engines are created per
-/// State, possibly on several threads. Executing plans is thread-safe.
-std::mutex& planner_mutex() {
-  static std::mutex mutex;
-  return mutex;
-}
-
-/// Set once the planner searched for a plan that no wisdom held (core/fft_wisdom.hpp writes
-/// the wisdom back only then). Process-wide, like FFTW's planner and its wisdom.
-std::atomic<bool>& planner_learnt() {
-  static std::atomic<bool> learnt{false};
-  return learnt;
-}
-
-/// Single-precision wisdom to read before the first single-precision plan, and whether one was
-/// made. Reading it at start-up would start FFTW's single-precision planner (≈ 0.4 ms) in
-/// processes that never plan in single precision (small grids). Under planner_mutex().
-struct SingleWisdom {
-  std::string pending;
-  bool used = false;
+/// FFTW's planner (plan creation and destruction) is not thread-safe and is process-wide, like
+/// its wisdom; engines are created per State, possibly on several threads (executing plans is
+/// thread-safe). One mutex guards the planner and what this process's planning did.
+struct Planner {
+  std::mutex mutex;
+  /// A plan that no wisdom held was searched for (the plan cache writes wisdom back only then).
+  bool learnt = false;
+  /// Single-precision wisdom to read before the first single-precision plan, and whether one was
+  /// made: reading it at start-up would start FFTW's single-precision planner (≈ 0.4 ms) in
+  /// processes that never plan in single precision (small grids).
+  std::string pending_single_wisdom;
+  bool single_used = false;
 };
-SingleWisdom& single_wisdom() {
-  static SingleWisdom state;
+Planner& planner() {
+  static Planner state;
   return state;
+}
+std::mutex& planner_mutex() {
+  return planner().mutex;
 }
 
 /// `make(flags)` from wisdom alone first (FFTW_WISDOM_ONLY: a lookup, no search; the plan is
@@ -53,7 +47,7 @@ SingleWisdom& single_wisdom() {
 template <class Make>
 auto plan_wisdom_first(Make make, unsigned flags) {
   if (auto plan = make(flags | FFTW_WISDOM_ONLY)) return plan;
-  planner_learnt() = true;
+  planner().learnt = true;
   return make(flags);
 }
 
@@ -277,18 +271,17 @@ class FftwEngine final : public FftEngine {
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
       if (columns_forward_ == nullptr) {
-        columns_forward_ = plan_wisdom_first(
-            [&](unsigned f) {
-              return fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
-                                        nullptr, half, 1, FFTW_FORWARD, f);
-            },
-            flags_);
-        columns_inverse_ = plan_wisdom_first(
-            [&](unsigned f) {
-              return fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
-                                        nullptr, half, 1, FFTW_BACKWARD, f);
-            },
-            flags_);
+        // The slow-index transforms of all columns of the half-spectrum, in place.
+        const auto columns = [&](int sign) {
+          return plan_wisdom_first(
+              [&](unsigned f) {
+                return fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
+                                          nullptr, half, 1, sign, f);
+              },
+              flags_);
+        };
+        columns_forward_ = columns(FFTW_FORWARD);
+        columns_inverse_ = columns(FFTW_BACKWARD);
       }
       p.rows_forward = plan_wisdom_first(
           [&](unsigned f) {
@@ -367,22 +360,21 @@ class FftwSingleCirculant final : public SingleCirculant {
       // The slow-index transforms of all columns, in place; the row transforms follow on first
       // use, pruned to the block's rows.
       std::lock_guard<std::mutex> lock(planner_mutex());
-      SingleWisdom& wisdom = single_wisdom();
-      if (!wisdom.pending.empty()) fftwf_import_wisdom_from_string(wisdom.pending.c_str());
-      wisdom.pending.clear();
-      wisdom.used = true;
-      columns_forward_ = plan_wisdom_first(
-          [&](unsigned f) {
-            return fftwf_plan_many_dft(1, &ns_, half, spectrum_, nullptr, half, 1, spectrum_,
-                                       nullptr, half, 1, FFTW_FORWARD, f);
-          },
-          flags_);
-      columns_inverse_ = plan_wisdom_first(
-          [&](unsigned f) {
-            return fftwf_plan_many_dft(1, &ns_, half, spectrum_, nullptr, half, 1, spectrum_,
-                                       nullptr, half, 1, FFTW_BACKWARD, f);
-          },
-          flags_);
+      Planner& state = planner();
+      if (!state.pending_single_wisdom.empty())
+        fftwf_import_wisdom_from_string(state.pending_single_wisdom.c_str());
+      state.pending_single_wisdom.clear();
+      state.single_used = true;
+      const auto columns = [&](int sign) {
+        return plan_wisdom_first(
+            [&](unsigned f) {
+              return fftwf_plan_many_dft(1, &ns_, half, spectrum_, nullptr, half, 1, spectrum_,
+                                         nullptr, half, 1, sign, f);
+            },
+            flags_);
+      };
+      columns_forward_ = columns(FFTW_FORWARD);
+      columns_inverse_ = columns(FFTW_BACKWARD);
     }
     if (columns_forward_ == nullptr || columns_inverse_ == nullptr) {
       release();
@@ -507,17 +499,18 @@ std::unique_ptr<FftEngine> make_fftw_engine(int n_fast, int n_slow, FftPlanning 
 }
 
 bool fftw_planned_beyond_wisdom() noexcept {
-  return planner_learnt();
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  return planner().learnt;
 }
 
 void defer_single_precision_wisdom(std::string text) {
   std::lock_guard<std::mutex> lock(planner_mutex());
-  single_wisdom().pending = std::move(text);
+  planner().pending_single_wisdom = std::move(text);
 }
 
 bool fftw_single_precision_used() noexcept {
   std::lock_guard<std::mutex> lock(planner_mutex());
-  return single_wisdom().used;
+  return planner().single_used;
 }
 
 std::unique_ptr<SingleCirculant> make_fftw_single_circulant(int n_fast, int n_slow,
