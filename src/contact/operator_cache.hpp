@@ -55,13 +55,20 @@ struct OperatorKey {
   double shift_x = 0.0, shift_y = 0.0;  ///< [mm]
   elastic::InteractionPtr interaction;  ///< compared by contents
 
+  /// C=9 tables by contents: every case of a sequence reads its file again (a new table object),
+  /// and operators built for the first serve the others.
+  static bool same_table(const CombinedMaterial& a, const CombinedMaterial& b) noexcept {
+    if (a.table == b.table) return true;
+    return a.table && b.table && a.table->same_coefficients(*b.table);
+  }
+
   friend bool operator==(const OperatorKey& a, const OperatorKey& b) noexcept {
     return a.grid.mx == b.grid.mx && a.grid.my == b.grid.my && a.grid.dx == b.grid.dx &&
            a.grid.dy == b.grid.dy && a.material.g == b.material.g &&
            a.material.nu == b.material.nu && a.material.k == b.material.k &&
            a.material.layer_compliance == b.material.layer_compliance &&
            a.material.normal_layer_compliance == b.material.normal_layer_compliance &&
-           a.material.viscous == b.material.viscous && a.material.table == b.material.table &&
+           a.material.viscous == b.material.viscous && same_table(a.material, b.material) &&
            a.material.elements == b.material.elements && a.kind == b.kind &&
            a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
            elastic::same_interaction(a.interaction, b.interaction);

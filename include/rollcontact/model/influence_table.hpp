@@ -30,6 +30,12 @@ struct InfluenceTable {
     return static_cast<std::size_t>(ixofs + mx - 1) +
            static_cast<std::size_t>(2 * mx - 1) * static_cast<std::size_t>(iyofs + my - 1);
   }
+  /// The same coefficients for the same element size (wherever they were read from): operators
+  /// built from one serve the other.
+  [[nodiscard]] bool same_coefficients(const InfluenceTable& o) const noexcept {
+    return mx == o.mx && my == o.my && dx_mm == o.dx_mm && dy_mm == o.dy_mm &&
+           coupled == o.coupled && values == o.values;
+  }
   /// C_ij at an offset [elements]; 0 beyond the table (a smaller file grid is zero-padded).
   [[nodiscard]] double at(Component c, int ixofs, int iyofs) const noexcept {
     if (ixofs <= -mx || ixofs >= mx || iyofs <= -my || iyofs >= my) return 0.0;

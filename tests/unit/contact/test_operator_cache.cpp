@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include "contact/operator_cache.hpp"
 #include "elastic/material.hpp"
 
@@ -46,6 +48,32 @@ TEST(OperatorCache, TangentialKeyIncludesKindAndRollingStep) {
   TangentialOperators& shift = cache.tangential(g, kSteel, model::TangentialKind::Shift, 0.5, 0.0);
   EXPECT_TRUE(shift.view().symmetric);
   EXPECT_EQ(&cache.tangential(g, kSteel, model::TangentialKind::Shift, 0.1, 0.2), &shift);
+}
+
+TEST(OperatorCache, InfluenceTablesAreComparedByTheirCoefficients) {
+  // A C=9 table as every case of a sequence reads it again: equal contents, another object.
+  auto table = std::make_shared<model::InfluenceTable>();
+  table->mx = table->my = 2;
+  table->dx_mm = table->dy_mm = 0.5;
+  for (auto& v : table->values) v.assign(9, 0.0);
+  table->values[model::InfluenceTable::zz][4] = 1.0;
+  table->values[model::InfluenceTable::xx][4] = 0.8;
+  table->values[model::InfluenceTable::yy][4] = 0.8;
+  CombinedMaterial first = kSteel, again = kSteel, other = kSteel;
+  first.table = table;
+  again.table = std::make_shared<model::InfluenceTable>(*table);
+  auto changed = std::make_shared<model::InfluenceTable>(*table);
+  changed->values[model::InfluenceTable::zz][4] = 1.1;
+  other.table = changed;
+  OperatorCache cache({});
+  cache.begin_case();
+  NormalOperators& a = cache.normal(grid_of(4, 0.5), first);
+  EXPECT_EQ(&cache.normal(grid_of(4, 0.5), again), &a);
+  EXPECT_EQ(cache.builds(), 1u);
+  EXPECT_NE(&cache.normal(grid_of(4, 0.5), other), &a);
+  EXPECT_EQ(cache.builds(), 2u);
+  cache.normal(grid_of(4, 0.5), kSteel);  // no table: the closed forms
+  EXPECT_EQ(cache.builds(), 3u);
 }
 
 TEST(OperatorCache, EvictsTheLeastRecentlyUsedOfEarlierCases) {
