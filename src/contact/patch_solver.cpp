@@ -335,6 +335,9 @@ class CaseSolver {
                                       double cphi);
   void add_unshifted_displacement(const Field& px, const Field& py, const Field& pn, Field& ux,
                                   Field& uy) const;
+  /// The creepage iteration for prescribed forces (F=1, 2), started from the previous case
+  /// `prev` (creepages and Jacobian) where the sequence continues, else afresh.
+  ForceIterationInput force_iteration_input(const Solution* prev) const;
   void compute_totals(const tangential::TangentialResult* tang);
   /// H ≥ 1: TEMP1, TEMP2 and their maxima from the final solution (physics.md §15).
   void compute_temperatures();
@@ -854,6 +857,27 @@ tangential::TangentialResult CaseSolver::solve_on_grid(const tangential::Tangent
   return jacobi;
 }
 
+ForceIterationInput CaseSolver::force_iteration_input(const Solution* prev) const {
+  const model::TangentialLoading& t = problem_.tangential;
+  const bool both = t.prescribed == model::TangentialPrescribed::Forces;
+  ForceIterationInput in;
+  in.unknowns = both ? 2 : 1;
+  in.target_x = t.force_x_over_mu_fn;
+  in.target_y = t.force_y_over_mu_fn;
+  in.fixed_eta = t.creepage.lateral;
+  const bool restart = !problem_.sequence.force_iteration_from_previous || !prev;
+  in.start_ksi = restart ? 1e-6 : prev->totals.creep_x + prev->totals.shift_x;
+  in.start_eta =
+      both ? (restart ? 0.0 : prev->totals.creep_y + prev->totals.shift_y) : t.creepage.lateral;
+  if (!restart) {
+    const Sensitivities& d = prev->sensitivities;
+    in.start_jacobian = {d.dfx_dksi, d.dfx_deta, d.dfy_dksi, d.dfy_deta};
+  }
+  in.eps = problem_.solver.tolerance;
+  in.max_iterations = problem_.solver.max_newton_iterations;
+  return in;
+}
+
 void CaseSolver::run() {
   const std::size_t n = grid_.size();
   const model::TangentialKind kind = problem_.tangential.kind;
@@ -940,23 +964,7 @@ void CaseSolver::run() {
     if (prescribed == model::TangentialPrescribed::Creepages) {
       evaluate(creepage.longitudinal, creepage.lateral);
     } else {
-      const bool both = prescribed == model::TangentialPrescribed::Forces;
-      ForceIterationInput in;
-      in.unknowns = both ? 2 : 1;
-      in.target_x = problem_.tangential.force_x_over_mu_fn;
-      in.target_y = problem_.tangential.force_y_over_mu_fn;
-      in.fixed_eta = creepage.lateral;
-      const bool restart = !problem_.sequence.force_iteration_from_previous || !prev;
-      in.start_ksi = restart ? 1e-6 : prev->totals.creep_x + prev->totals.shift_x;
-      in.start_eta =
-          both ? (restart ? 0.0 : prev->totals.creep_y + prev->totals.shift_y) : creepage.lateral;
-      if (!restart) {
-        const Sensitivities& d = prev->sensitivities;
-        in.start_jacobian = {d.dfx_dksi, d.dfx_deta, d.dfy_dksi, d.dfy_deta};
-      }
-      in.eps = problem_.solver.tolerance;
-      in.max_iterations = problem_.solver.max_newton_iterations;
-      creep = force_iteration(in, evaluate);
+      creep = force_iteration(force_iteration_input(prev), evaluate);
       sol_.solver.newton_iterations += creep.iterations;
       sol_.sensitivities.dfx_dksi = creep.jacobian[0];
       sol_.sensitivities.dfx_deta = creep.jacobian[1];
