@@ -74,13 +74,16 @@ struct RailDeflection {
 };
 
 struct WheelRailSolution {
-  std::vector<WheelRailPatch> patches;   ///< sorted by lateral position; empty: no contact
-  Vector3 force_tr, force_ws;            ///< totals on the rail [N]
-  Vector3 moment_tr, moment_ws;          ///< totals about the markers (as per patch) [N mm]
-  ProfileMarker rail_marker_tr;          ///< rail-profile origin in track coordinates
-  ProfileMarker wheel_marker_tr;         ///< wheel-profile origin in track coordinates
-  ProfileMarker wheel_marker_ws;         ///< wheel-profile origin in wheelset coordinates
-  double z_ws_mm = 0.0;                  ///< wheelset height used (solved when FZ is prescribed)
+  std::vector<WheelRailPatch> patches;  ///< sorted by lateral position; empty: no contact
+  Vector3 force_tr, force_ws;           ///< totals on the rail [N]
+  Vector3 moment_tr, moment_ws;         ///< totals about the markers (as per patch) [N mm]
+  ProfileMarker rail_marker_tr;         ///< rail-profile origin in track coordinates
+  ProfileMarker wheel_marker_tr;        ///< wheel-profile origin in track coordinates
+  ProfileMarker wheel_marker_ws;        ///< wheel-profile origin in wheelset coordinates
+  double z_ws_mm = 0.0;                 ///< wheelset height used (solved when FZ is prescribed)
+  double vpitch_rad_s = 0.0;  ///< pitch velocity used (solved when FX_WS is prescribed, F=1)
+  /// F=1: the outer iterates on VPITCH (complete N=1 solves), 0 otherwise.
+  int pitch_iterations = 0;
   std::vector<VerticalForceStep> trace;  ///< N=1 iterates (iteration 0: geometry only)
   RailDeflection rail_deflection;        ///< F=3 only
   bool converged = true;

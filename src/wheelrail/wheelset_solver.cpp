@@ -10,10 +10,12 @@
 #include "geometry/hertz.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/wheelrail.hpp"
+#include "simplified/kalker_coefficients.hpp"
 #include "wheelrail/contact_search.hpp"
 #include "wheelrail/friction_variation.hpp"
 #include "wheelrail/massless_rail.hpp"
 #include "wheelrail/patch_setup.hpp"
+#include "wheelrail/pitch_velocity.hpp"
 #include "wheelrail/placed_profiles.hpp"
 #include "wheelrail/vertical_force.hpp"
 #include "wheelrail/wheelset_pose.hpp"
@@ -85,6 +87,9 @@ struct WheelsetSolver::Impl {
                                      const wheelrail::VerticalForceSettings& st);
   /// F=3: the rail deflections around complete solves (spec/wheelrail-advanced.md §2).
   WheelRailSolution solve_massless_rail(const model::WheelRailProblem& problem);
+  /// F=1: the pitch velocity for the prescribed FX_WS around complete N=1 solves
+  /// (spec-additions §A6).
+  WheelRailSolution solve_pitch_velocity(const model::WheelRailProblem& problem);
 
   wheelrail::GapSamples samples;  ///< of the current case
 
@@ -226,6 +231,45 @@ void mirror_to_left(WheelRailSolution& s) {
     t.creep_y = -t.creep_y;
     t.spin = -t.spin;
   }
+}
+
+/// Semi-axes [mm] of the ellipse with the area and the extents of a patch's contact: a along x
+/// (rolling), b lateral; a·b = area/π with a/b the ratio of the extents.
+std::pair<double, double> equivalent_semi_axes(const Solution& s) {
+  int n = 0, ix_lo = s.grid.mx, ix_hi = -1, iy_lo = s.grid.my, iy_hi = -1;
+  for (int iy = 0; iy < s.grid.my; ++iy)
+    for (int ix = 0; ix < s.grid.mx; ++ix)
+      if (!s.pn.empty() && s.pn[s.grid.index(ix, iy)] > 0.0) {
+        ++n;
+        ix_lo = std::min(ix_lo, ix);
+        ix_hi = std::max(ix_hi, ix);
+        iy_lo = std::min(iy_lo, iy);
+        iy_hi = std::max(iy_hi, iy);
+      }
+  if (n == 0) return {0.0, 0.0};
+  const double area = n * s.grid.dx * s.grid.dy;
+  const double ratio = ((ix_hi - ix_lo + 1) * s.grid.dx) / ((iy_hi - iy_lo + 1) * s.grid.dy);
+  const double ab = area / M_PI;
+  return {std::sqrt(ab * ratio), std::sqrt(ab / ratio)};
+}
+
+/// Linear theory's d(F_x/F_z)/dVPITCH [s/rad] (spec-additions §A6): Σ G·a·b·C11·r/|V| over the
+/// patches, r the distance of the contact point below the axle, over F_z.
+double linear_pitch_slope(const WheelRailSolution& s, const model::Bodies& bodies, double v) {
+  const double g =
+      1.0 /
+      (0.5 * (1.0 / bodies.body1.shear_modulus_N_mm2 + 1.0 / bodies.body2.shear_modulus_N_mm2));
+  const double nu = 0.5 * g *
+                    (bodies.body1.poisson_ratio / bodies.body1.shear_modulus_N_mm2 +
+                     bodies.body2.poisson_ratio / bodies.body2.shear_modulus_N_mm2);
+  double slope = 0.0;
+  for (const WheelRailPatch& w : s.patches) {
+    const auto [a, b] = equivalent_semi_axes(w.solution);
+    if (!(a > 0.0 && b > 0.0)) continue;
+    const double c11 = simplified::kalker_coefficients(a / b, nu).c11;
+    slope += g * a * b * c11 * std::abs(w.reference_ws.z) / std::abs(v);
+  }
+  return slope / std::max(std::abs(s.force_tr.z), 1.0);
 }
 
 }  // namespace
@@ -551,10 +595,77 @@ WheelRailSolution WheelsetSolver::Impl::solve_massless_rail(
   return result;
 }
 
+WheelRailSolution WheelsetSolver::Impl::solve_pitch_velocity(
+    const model::WheelRailProblem& problem) {
+  if (problem.vertical != model::VerticalLoading::Force)
+    throw ProblemError(
+        "a prescribed longitudinal force FX_WS (F=1) requires the vertical force prescribed (N=1)");
+  if (problem.massless_rail.enabled)
+    throw ProblemError(
+        "a prescribed longitudinal force FX_WS (F=1) and the massless rail (F=3) exclude each "
+        "other");
+  if (problem.patch.tangential.kind == model::TangentialKind::None)
+    throw ProblemError("a prescribed longitudinal force FX_WS (F=1) requires a tangential problem");
+  const double v = problem.motion.vs_mm_s;
+  if (!(std::abs(v) > 0.0))
+    throw ProblemError(
+        "a prescribed longitudinal force FX_WS (F=1) requires a rolling velocity VS");
+  const double eps = problem.patch.solver.tolerance;
+  const double mu = std::max(problem.patch.friction.static_coefficient, 1e-3);
+  model::WheelRailProblem q = problem;
+  q.longitudinal = model::LongitudinalLoading::PitchVelocity;
+  WheelRailSolution result;
+  int solves = 0;
+  auto solve = [&](double vpitch, double inner_tolerance) {
+    q.motion.vpitch_rad_s = vpitch;
+    q.first_of_sequence = problem.first_of_sequence && solves == 0;
+    ++solves;
+    VerticalOptions vo;
+    vo.tolerance = inner_tolerance;
+    result = solve_placed(q, vo);
+    wheelrail::PitchVelocitySample sample;
+    sample.usable = result.converged && std::abs(result.force_tr.z) > 0.0;
+    sample.ratio = sample.usable ? result.force_ws.x / result.force_tr.z : 0.0;
+    sample.vertical_error = std::abs(result.force_tr.z / problem.motion.fz_N - 1.0);
+    return sample;
+  };
+  // Start: the given VPITCH, else free rolling on the nominal radius (CONTACT starts from the
+  // rolling radius at the initial contact point; linear theory's first step corrects either).
+  const double nominal = problem.wheelset.nominal_radius_mm;
+  const double start =
+      std::abs(problem.motion.vpitch_rad_s) > 0.0 ? problem.motion.vpitch_rad_s : -v / nominal;
+  wheelrail::PitchVelocitySettings st;
+  st.start_rad_s = start;
+  st.target = problem.motion.fx_ws_N / problem.motion.fz_N;
+  st.saturation = mu;
+  st.tolerance = eps * mu;
+  st.vertical_tolerance = eps;
+  st.max_jump = mu;
+  // At most a creepage of 1 % per step: beyond it a patch slides wholly.
+  st.max_step_rad_s = 0.01 * std::abs(v) / nominal;
+  st.max_iterations = problem.patch.solver.max_newton_iterations;
+  // The first solve to EPS; linear theory's slope needs its patches.
+  const wheelrail::PitchVelocitySample first = solve(start, eps);
+  st.slope_s_per_rad = linear_pitch_slope(result, problem.patch.bodies, v);
+  if (!(st.slope_s_per_rad > 0.0)) st.slope_s_per_rad = nominal / std::abs(v);  // no contact
+  const wheelrail::PitchVelocityResult it = wheelrail::solve_pitch_velocity(st, first, solve);
+  result.vpitch_rad_s = it.vpitch_rad_s;
+  result.pitch_iterations = it.iterations;
+  if (!it.converged) {
+    result.converged = false;
+    if (result.message.empty()) result.message = it.message;
+  }
+  return result;
+}
+
 WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
   impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
-  WheelRailSolution result = problem.massless_rail.enabled ? impl_->solve_massless_rail(problem)
-                                                           : impl_->solve_placed(problem, {});
+  WheelRailSolution result = problem.longitudinal == model::LongitudinalLoading::Force
+                                 ? impl_->solve_pitch_velocity(problem)
+                             : problem.massless_rail.enabled ? impl_->solve_massless_rail(problem)
+                                                             : impl_->solve_placed(problem, {});
+  if (problem.longitudinal != model::LongitudinalLoading::Force)
+    result.vpitch_rad_s = problem.motion.vpitch_rad_s;
   result.geometry_seconds = impl_->geometry_seconds;
   result.patch_solve_seconds = impl_->patch_solve_seconds;
   return result;

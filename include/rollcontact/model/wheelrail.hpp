@@ -84,9 +84,17 @@ struct WheelsetState {
   double roll_rad = 0.0, yaw_rad = 0.0, pitch_rad = 0.0;
   double vs_mm_s = 0.0, vy_mm_s = 0.0, vz_mm_s = 0.0;
   double vroll_rad_s = 0.0, vyaw_rad_s = 0.0, vpitch_rad_s = 0.0;
+  /// Longitudinal force on the rail in wheelset coordinates FX_WS [N] (LongitudinalLoading::Force
+  /// only; CONTACT's F=1): the pitch velocity is then solved for.
+  double fx_ws_N = 0.0;
 };
 
 enum class VerticalLoading { Position, Force };
+
+/// What fixes the wheelset's rolling: its pitch velocity VPITCH (F=0), or the longitudinal
+/// force FX_WS on the rail with VPITCH solved for (CONTACT's experimental F=1; requires the
+/// vertical force prescribed, spec-additions §A6).
+enum class LongitudinalLoading { PitchVelocity, Force };
 
 /// The massless rail model (CONTACT's F=3, spec/wheelrail-advanced.md §2): the rail deflects
 /// laterally by δy and vertically by δz [mm] until the contact force on it, a linear spring and a
@@ -125,6 +133,7 @@ struct WheelRailProblem {
   WheelsetGeometry wheelset;
   WheelsetState motion;
   VerticalLoading vertical = VerticalLoading::Force;
+  LongitudinalLoading longitudinal = LongitudinalLoading::PitchVelocity;
   MasslessRail massless_rail;  ///< F=3; disabled: a rigid rail (δy = δz = 0)
   ContactSearchSettings search;
   /// The first case of a sequence: contact at a profile end is an error (misplaced wheel).

@@ -286,7 +286,9 @@ CNTC_EXPORT void cntc_getwheelsetvelocity(int* ire, int* lenarr, double* values)
   if (p == nullptr || lenarr == nullptr || values == nullptr) return;
   const double vel = p->units.velocity;
   const format::WheelsetMotion& m = p->record.motion;
-  const double all[6] = {m.vs / vel, m.vy / vel, m.vz / vel, m.vroll, m.vyaw, m.vpitch};
+  // F1 = 1: VPITCH is solved for the prescribed FX_WS.
+  const double vpitch = p->result ? p->result->vpitch_rad_s : m.vpitch;
+  const double all[6] = {m.vs / vel, m.vy / vel, m.vz / vel, m.vroll, m.vyaw, vpitch};
   for (int k = 0; k < std::min(*lenarr, 6); ++k) values[k] = all[k];
 }
 

@@ -154,6 +154,7 @@ py::dict wheelrail_to_dict(WheelRailSolution solution) {
   d["force_ws"] =
       std::vector<double>{solution.force_ws.x, solution.force_ws.y, solution.force_ws.z};
   d["z_ws"] = solution.z_ws_mm;
+  d["vpitch"] = solution.vpitch_rad_s;
   d["moment_tr"] =
       std::vector<double>{solution.moment_tr.x, solution.moment_tr.y, solution.moment_tr.z};
   d["moment_ws"] =

@@ -33,10 +33,12 @@ model::WheelRailProfile to_wheelrail_profile(const ProfileSpec& s) {
 namespace {
 
 /// The settings every patch shares, through the module-3 adapter: a case record with the
-/// module-1 meanings of N, E, Z taken out (each patch is posed with its approach).
+/// module-1 meanings of N, F, E, Z taken out (each patch is posed with its approach and its
+/// creepages; F=1's FX_WS is the wheelset's, not a patch's relative force).
 model::PatchProblem patch_template(const WheelRailRecord& r) {
   CaseRecord t = settings_record(r);
   t.digits.n = 0;
+  t.digits.f = 0;
   t.digits.e = 0;
   t.digits.z = 0;
   t.digits.v = 0;
@@ -72,13 +74,9 @@ void check_supported(const WheelRailRecord& r) {
   if (r.discretisation.method != 2)
     not_supported(fmt::format("contact search D={}", r.discretisation.method));
   if (d.t == 1 || d.t == 2) not_supported(fmt::format("transient rolling or shifts T={}", d.t));
-  // F=3 (massless rail) is solved; F=1, 2 (experimental in CONTACT: FX_WS or MY_WS prescribed
-  // with ω = VPITCH as the unknown) are not implemented.
-  if (d.f == 1 || d.f == 2)
-    not_supported(
-        fmt::format("prescribed longitudinal force or moment F={} (experimental in "
-                    "CONTACT)",
-                    d.f));
+  // F=1 (FX_WS prescribed, VPITCH solved) and F=3 (massless rail) are solved; F=2 (MY_WS
+  // prescribed, experimental in CONTACT and not in the spec) is not.
+  if (d.f == 2) not_supported("prescribed wheelset moment F=2 (experimental in CONTACT)");
   // KPEC/ANALYN (B=5, 6) reproduce mbench_a22_kpec cases 2-5; the wheel/rail solver refuses
   // the patches where they do not (cases 1 and 6; model::WheelRailProblem::validated_only).
   // The wheel/rail solver interpolates V=1, 2 friction per patch (model::FrictionVariation); the
@@ -127,6 +125,10 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   p.motion = {m.s,  m.y,  m.z,  m.fz,    m.roll, m.yaw,   m.pitch,
               m.vs, m.vy, m.vz, m.vroll, m.vyaw, m.vpitch};
   p.vertical = r.digits.n == 1 ? model::VerticalLoading::Force : model::VerticalLoading::Position;
+  if (r.digits.f == 1) {
+    p.longitudinal = model::LongitudinalLoading::Force;
+    p.motion.fx_ws_N = m.fx;
+  }
   if (r.digits.f == 3) {
     if (!r.has_massless_rail)
       throw ProblemError("F=3 (massless rail) without the rail stiffness line");

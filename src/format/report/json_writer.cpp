@@ -67,6 +67,8 @@ nlohmann::json wheelrail_case_to_json(const CaseRecord& identity,
   j["message"] = solution.converged ? std::string() : solution.message;
   auto vec = [](const Vector3& v) { return nlohmann::json::array({v.x, v.y, v.z}); };
   j["z_ws"] = solution.z_ws_mm;
+  j["vpitch"] = solution.vpitch_rad_s;
+  if (solution.pitch_iterations > 0) j["pitch_iterations"] = solution.pitch_iterations;
   j["force_tr"] = vec(solution.force_tr);
   j["force_ws"] = vec(solution.force_ws);
   if (const RailDeflection& rd = solution.rail_deflection; rd.active)

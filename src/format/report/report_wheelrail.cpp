@@ -75,7 +75,7 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
   line(os, "");
   line(os, "     VX_WS       VY_WS       VZ_WS       VROLL_WS    VYAW_WS     VPITCH_WS");
   line(os, "  " + sig(m.vs) + sig(m.vy) + sig(m.vz) + sig(m.vroll) + sig(m.vyaw) +
-               fmt_sig(12, 8, 8, m.vpitch));
+               fmt_sig(12, 8, 8, s.vpitch_rad_s));  // solved for F=1
 }
 
 void write_totals(std::ostream& os, const WheelRailSolution& s) {

@@ -494,10 +494,10 @@ class WheelRailWriter {
 
   void write() {
     const ControlDigits& d = r_.digits;
-    if (r_.variable_friction.v != 0 || d.f == 1 || d.f == 2 || d.e == 4 || d.e == 5 ||
-        r_.rail.sliced || r_.wheel.sliced)
+    if (r_.variable_friction.v != 0 || d.f == 2 || d.e == 4 || d.e == 5 || r_.rail.sliced ||
+        r_.wheel.sliced)
       throw Error(
-          fmt::format("case {}: variable friction, prescribed FX_WS/MY_WS (F=1, 2), flexible "
+          fmt::format("case {}: variable friction, prescribed MY_WS (F=2), flexible "
                       "wheelsets and variable profiles have no TOML case-file equivalent yet",
                       r_.case_number));
     out_ += "\n[[case]]\n";
@@ -550,6 +550,7 @@ class WheelRailWriter {
                                                       "\"left_roller\"", "\"right_roller\""};
     line("side", sides[static_cast<std::size_t>(std::clamp(r_.config, 0, 5))]);
     if (r_.digits.n == 1) line("vertical_force_N", real(r_.motion.fz));
+    if (r_.digits.f == 1) line("longitudinal_force_N", real(r_.motion.fx));
     const WheelRailDiscretisation& ds = r_.discretisation;
     table("case.wheel_rail.discretisation");
     line("element_size_mm", real_array(std::array<double, 2>{ds.dx, ds.ds}));

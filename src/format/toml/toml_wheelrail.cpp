@@ -170,6 +170,12 @@ void read_motion(Table& w, WheelRailRecord& r) {
   } else {
     m.z = *z;
   }
+  // F=1: the longitudinal force on the rail instead of the pitch velocity, which is solved for.
+  if (const auto fx = w.opt_real("longitudinal_force_N")) {
+    if (!fz) w.fail_key("longitudinal_force_N", "needs vertical_force_N (N=1), not position.z_mm");
+    m.fx = *fx;
+    r.digits.f = 1;
+  }
   Table v = w.table("velocity");
   m.vs = v.real_or("forward_mm_per_s", 0.0);
   m.vy = v.real_or("y_mm_per_s", 0.0);
@@ -197,6 +203,8 @@ void read_massless_rail(Table& w, WheelRailRecord& r) {
     t->fail_key("kz_N_per_mm",
                 "must not be 0 with position.z_mm given (or give vertical_force_N instead)");
   t->finish();
+  if (r.digits.f == 1)
+    t->fail("the massless rail and longitudinal_force_N (F=1) exclude each other");
   r.digits.f = 3;
   r.has_massless_rail = true;
 }
