@@ -95,14 +95,17 @@ CommandRunner add_plot_command(CLI::App& app) {
       "plot",
       "Solve FILE (.inp, .toml, or the .json a run wrote) and plot one result as an image: "
       "pressure, traction, slip (with the adhesion/slip boundary), the creep-force curve of "
-      "the file's cases or a wheel/rail case's profiles with its contact patches (uses the Python "
-      "package; docs/python.md)");
-  cmd->add_option("FILE", settings->input, "input file (.inp, .toml) or a run's .json")
+      "the file's cases or a wheel/rail case's profiles with its contact patches, or the history "
+      "of `rollcontact dynamic` (FILE.csv, --what dynamic) (uses the Python package; "
+      "docs/python.md)");
+  cmd->add_option("FILE", settings->input,
+                  "input file (.inp, .toml), a run's .json, or a dynamic run's .csv")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--what", settings->what, "what to plot")
       ->required()
-      ->check(CLI::IsMember({"pressure", "traction", "slip", "creep-curve", "profiles"}));
+      ->check(
+          CLI::IsMember({"pressure", "traction", "slip", "creep-curve", "profiles", "dynamic"}));
   cmd->add_option("--case", settings->case_number, "case number (default 1)");
   cmd->add_option("--patch", settings->patch, "wheel/rail patch (module 1, default 1)");
   cmd->add_option("-o,--output", settings->output, "image file (.png, .pdf, .svg)")->required();

@@ -35,6 +35,10 @@ CommandRunner add_plot_command(CLI::App& app);
 /// over the processes of `distribution` (several under mpirun).
 CommandRunner add_table_command(CLI::App& app, batch::Distribution& distribution);
 
+/// `rollcontact dynamic CASE -o RUN.csv`: a wheel under a sprung mass rolling along the rail,
+/// integrated in time with the contact solved at every step.
+CommandRunner add_dynamic_command(CLI::App& app);
+
 /// `rollcontact lookup -o FILE.h5`: a creep-force lookup table for MBS codes (HDF5); `--table
 /// FILE --at ...` evaluates one.
 CommandRunner add_lookup_command(CLI::App& app, batch::Distribution& distribution);

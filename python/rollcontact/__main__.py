@@ -51,9 +51,11 @@ def main(argv=None):
     run.add_argument("file")
     run.add_argument("-o", "--output-dir", default=None)
     plot = sub.add_parser("plot", help="solve a file and plot one of its results")
-    plot.add_argument("file", help=".inp, .toml, or the .json a run wrote")
+    plot.add_argument("file", help=".inp, .toml, the .json a run wrote, or the .csv of "
+                                   "`rollcontact dynamic` (with --what dynamic)")
     plot.add_argument("--what", required=True,
-                      choices=["pressure", "traction", "slip", "creep-curve", "profiles"])
+                      choices=["pressure", "traction", "slip", "creep-curve", "profiles",
+                               "dynamic"])
     plot.add_argument("--case", type=int, default=1)
     plot.add_argument("--patch", type=int, default=1, help="wheel/rail patch (module 1)")
     plot.add_argument("-o", "--output", required=True, help="image file (.png, .pdf, .svg)")
@@ -66,6 +68,17 @@ def main(argv=None):
                 print(_summary(c))
             failed = sum(1 for c in cases if not c["solved"] and not c["skipped"])
             return 1 if failed else 0
+        if args.what == "dynamic":
+            path = pathlib.Path(args.file)
+            first = path.read_text().splitlines()[0]
+            load = None
+            if "static load" in first:
+                load = float(first.split("static load")[1].split("N")[0])
+            ax = rc.plot.dynamic(rc.plot.read_dynamic(path), static_load_N=load,
+                                 title=f"{path.name}: dynamic rolling")
+            ax.figure.savefig(args.output, dpi=150)
+            print(args.output)
+            return 0
         source = _input_of(args.file)
         with tempfile.TemporaryDirectory() as scratch:
             cases = rc.run(source, scratch)

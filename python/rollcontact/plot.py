@@ -157,3 +157,45 @@ def wheelrail(case, ax=None, margin_mm=40.0, title=None):
         ax.set_ylim(zc + 0.5 * margin_mm, zc - 0.5 * margin_mm)  # z downwards
     ax.set_xlabel("y [mm] (track)")
     return ax
+
+
+def read_dynamic(path):
+    """The history `rollcontact dynamic` wrote (CSV, one row per kept step) as a NumPy record
+    array with the header's names (t_s, s_mm, z_ws_mm, fz_N, area_mm2, pmax_N_mm2, ...)."""
+    return np.genfromtxt(path, delimiter=",", names=True, skip_header=1)
+
+
+def dynamic(history, fig=None, title=None, static_load_N=None):
+    """A dynamic-rolling history (`read_dynamic`): the vertical contact force, the contact area
+    and the peak pressure along the rolled distance, and the wheel's height. Returns the
+    first Axes; all share the distance axis."""
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    if fig is None:
+        fig = plt.figure(figsize=(7.0, 7.0), constrained_layout=True)
+    axes = fig.subplots(3, 1, sharex=True)
+    s = history["s_mm"]
+    axes[0].plot(s, history["fz_N"] / 1e3, "k-", linewidth=1.0, label="F$_z$ (rail)")
+    if static_load_N:
+        axes[0].axhline(static_load_N / 1e3, color="0.5", linestyle="--", linewidth=0.8,
+                        label="static load")
+        axes[0].legend(loc="best", fontsize="small")
+    axes[0].set_ylabel("vertical contact force [kN]")
+    axes[1].plot(s, history["area_mm2"], "b-", linewidth=1.0)
+    axes[1].set_ylabel("contact area [mm$^2$]", color="b")
+    twin = axes[1].twinx()
+    twin.plot(s, history["pmax_N_mm2"], "r-", linewidth=1.0)
+    twin.set_ylabel("p$_{max}$ [N/mm$^2$]", color="r")
+    axes[2].plot(s, 1e3 * (history["z_ws_mm"] - history["z_ws_mm"][0]), "k-", linewidth=1.0,
+                 label="wheel")
+    if np.any(history["rail_dz_mm"] != 0.0):
+        axes[2].plot(s, 1e3 * history["rail_dz_mm"], "g--", linewidth=1.0, label="rail dip")
+        axes[2].legend(loc="best", fontsize="small")
+    axes[2].set_ylabel("height change [µm] (down)")
+    axes[2].set_xlabel("rolled distance [mm]")
+    if title:
+        axes[0].set_title(title)
+    return axes[0]
