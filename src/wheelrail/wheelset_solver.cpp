@@ -660,6 +660,15 @@ WheelRailSolution WheelsetSolver::Impl::solve_pitch_velocity(
 
 WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
   impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
+  if (problem.vertical == model::VerticalLoading::Force && !(problem.motion.fz_N >= 1e-9)) {
+    // CONTACT's early return (spec/wheelrail-advanced.md §6.3): a wheel without load is not in
+    // contact; z_ws = 0 and no forces, nothing solved. An MBS code lifting a wheel gets this.
+    WheelRailSolution none;
+    none.vpitch_rad_s = problem.motion.vpitch_rad_s;
+    none.warnings.push_back(fmt::format(
+        "FZ = {:g} N < 1e-9 N: no contact computed (z_ws = 0, zero forces)", problem.motion.fz_N));
+    return none;
+  }
   WheelRailSolution result = problem.longitudinal == model::LongitudinalLoading::Force
                                  ? impl_->solve_pitch_velocity(problem)
                              : problem.massless_rail.enabled ? impl_->solve_massless_rail(problem)

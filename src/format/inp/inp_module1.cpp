@@ -360,8 +360,7 @@ void read_position_line(InpStream& in, const ControlDigits& d, WheelRailRecord& 
   if (d.n == 0) {
     mo.z = g.real(2);
   } else {
-    mo.fz = g.real(2);
-    if (!(mo.fz > 0.0)) in.fail(g.line(2), fmt::format("FZ = {} must be positive (N=1)", mo.fz));
+    mo.fz = g.real(2);  // FZ < 1e-9 N: no contact computed, as in CONTACT (the solver says so)
   }
   mo.roll = g.real(3);
   mo.yaw = g.real(4);

@@ -166,7 +166,7 @@ void read_motion(Table& w, WheelRailRecord& r) {
   r.digits.n = fz ? 1 : 0;
   if (fz) {
     m.fz = *fz;
-    if (!(m.fz > 0.0)) w.fail_key("vertical_force_N", "must be positive");
+    if (!(m.fz >= 0.0)) w.fail_key("vertical_force_N", "must not be negative");
   } else {
     m.z = *z;
   }

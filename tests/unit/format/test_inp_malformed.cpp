@@ -131,7 +131,6 @@ constexpr MalformedCase kCases[] = {
     {"m1_digit_b2.inp", 3, "digit B=2 is not a valid value (0, 1, 5, 6)", false},
     {"m1_nomradw_zero.inp", 13, "NOMRADW = 0 must be at least 0.001", false},
     {"m1_mirrory_2.inp", 11, "MIRRORY = 2 outside -1..1", false},
-    {"m1_fz_zero.inp", 15, "FZ = 0 must be positive (N=1)", false},
     {"m1_slcs_with_gaught.inp", 11, "a rail slices file (.slcs) requires GAUGHT ≤ 0", false},
     {"m1_nvf_not_increasing.inp", 9, "friction control points must be strictly increasing", false},
     {"m1_e0_n_changes.inp", 19, "E=0 (keep wheelset) while N changes from 1 to 0", false},

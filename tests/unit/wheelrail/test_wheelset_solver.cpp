@@ -160,5 +160,22 @@ TEST(WheelsetSolver, NoOverlapIsReportedNotSilent) {
   EXPECT_NE(s.message.find("do not overlap"), std::string::npos) << s.message;
 }
 
+TEST(WheelsetSolver, WithoutLoadNoContactIsComputed) {
+  // CONTACT's early return for N=1 with FZ < 1e-9 N (a wheel lifted by the MBS code): no
+  // patches, z_ws = 0, zero forces, converged, and the report says why.
+  for (double fz : {0.0, 1e-12, -5.0}) {
+    model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+    p.vertical = model::VerticalLoading::Force;
+    p.motion.fz_N = fz;
+    const WheelRailSolution s = WheelsetSolver().solve(p);
+    EXPECT_TRUE(s.converged) << fz;
+    EXPECT_TRUE(s.patches.empty()) << fz;
+    EXPECT_EQ(s.z_ws_mm, 0.0);
+    EXPECT_EQ(s.force_tr.z, 0.0);
+    ASSERT_EQ(s.warnings.size(), 1U);
+    EXPECT_NE(s.warnings[0].find("no contact computed"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace rollcontact
