@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -102,6 +103,36 @@ TEST(TomlWheelRail, ConvertedBenchmarkFileGivesTheSameResults) {
     EXPECT_EQ(st.force_tr.y, si.force_tr.y) << "case " << wi.case_number;
     EXPECT_EQ(st.force_tr.z, si.force_tr.z) << "case " << wi.case_number;
   }
+}
+
+TEST(TomlWheelRail, S1002On54E1ExampleAndItsTwin) {
+  // examples/s1002_54e1.inp (the static case of docs/validation-fe.md) and its TOML twin solve
+  // to the same answer bit for bit; the answer balances: FZ as prescribed, and with no
+  // tangential problem the patch carries only its normal force FN, tilted by the contact
+  // angle δ, so FZ(TR) = FN cos δ and FY(TR) = −FN sin δ.
+  const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
+  const auto from_inp = format::read_input_cases(repo_examples / "s1002_54e1.inp");
+  const auto from_toml = format::read_toml_input_file(repo_examples / "toml" / "s1002_54e1.toml");
+  ASSERT_EQ(from_inp.size(), 1u);
+  ASSERT_EQ(from_toml.size(), 1u);
+  const auto& wi = std::get<format::WheelRailRecord>(from_inp[0]);
+  const WheelRailSolution si = WheelsetSolver().solve(format::to_wheelrail_problem(wi));
+  const WheelRailSolution st = WheelsetSolver().solve(
+      format::to_wheelrail_problem(std::get<format::WheelRailRecord>(from_toml[0])));
+  ASSERT_TRUE(si.converged) << si.message;
+  ASSERT_EQ(si.patches.size(), 1u);
+  ASSERT_EQ(st.patches.size(), 1u);
+  EXPECT_EQ(st.force_tr.y, si.force_tr.y);
+  EXPECT_EQ(st.force_tr.z, si.force_tr.z);
+  EXPECT_EQ(st.patches[0].solution.totals.pmax, si.patches[0].solution.totals.pmax);
+  EXPECT_EQ(st.patches[0].solution.totals.contact_area, si.patches[0].solution.totals.contact_area);
+  const double eps = 1e-5;  // EPS of the file
+  EXPECT_NEAR(si.force_tr.z, 1e5, 10.0 * eps * 1e5);
+  const WheelRailPatch& p = si.patches[0];
+  const double fn = p.solution.totals.fn;
+  EXPECT_NEAR(si.force_tr.z, fn * std::cos(p.contact_angle_rad), 1e-9 * fn);
+  EXPECT_NEAR(si.force_tr.y, -fn * std::sin(p.contact_angle_rad), 1e-9 * fn);
+  EXPECT_EQ(si.force_tr.x, 0.0);
 }
 
 TEST(TomlWheelRail, MasslessRailRoundTrip) {
