@@ -106,33 +106,52 @@ TEST(TomlWheelRail, ConvertedBenchmarkFileGivesTheSameResults) {
 }
 
 TEST(TomlWheelRail, S1002On54E1ExampleAndItsTwin) {
-  // examples/s1002_54e1.inp (the static case of docs/validation-fe.md) and its TOML twin solve
-  // to the same answer bit for bit; the answer balances: FZ as prescribed, and with no
-  // tangential problem the patch carries only its normal force FN, tilted by the contact
-  // angle δ, so FZ(TR) = FN cos δ and FY(TR) = −FN sin δ.
+  // examples/s1002_54e1.inp (the static case and the rolling case with traction of
+  // docs/validation-fe.md) and its TOML twin solve to the same answers bit for bit. Case 1
+  // balances: FZ as prescribed, and with no tangential problem the patch carries only its normal
+  // force FN, tilted by the contact angle δ, so FZ(TR) = FN cos δ and FY(TR) = −FN sin δ. Case 2
+  // (F=1) drives with FX = 0.25·FZ, and its pressure is case 1's: equal materials, no coupling.
   const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
   const auto from_inp = format::read_input_cases(repo_examples / "s1002_54e1.inp");
   const auto from_toml = format::read_toml_input_file(repo_examples / "toml" / "s1002_54e1.toml");
-  ASSERT_EQ(from_inp.size(), 1u);
-  ASSERT_EQ(from_toml.size(), 1u);
-  const auto& wi = std::get<format::WheelRailRecord>(from_inp[0]);
-  const WheelRailSolution si = WheelsetSolver().solve(format::to_wheelrail_problem(wi));
-  const WheelRailSolution st = WheelsetSolver().solve(
-      format::to_wheelrail_problem(std::get<format::WheelRailRecord>(from_toml[0])));
-  ASSERT_TRUE(si.converged) << si.message;
-  ASSERT_EQ(si.patches.size(), 1u);
-  ASSERT_EQ(st.patches.size(), 1u);
-  EXPECT_EQ(st.force_tr.y, si.force_tr.y);
-  EXPECT_EQ(st.force_tr.z, si.force_tr.z);
-  EXPECT_EQ(st.patches[0].solution.totals.pmax, si.patches[0].solution.totals.pmax);
-  EXPECT_EQ(st.patches[0].solution.totals.contact_area, si.patches[0].solution.totals.contact_area);
+  ASSERT_EQ(from_inp.size(), 2u);
+  ASSERT_EQ(from_toml.size(), 2u);
+  WheelsetSolver inp_solver, toml_solver;
+  std::vector<WheelRailSolution> si, st;
+  for (std::size_t k = 0; k < 2; ++k) {
+    si.push_back(inp_solver.solve(
+        format::to_wheelrail_problem(std::get<format::WheelRailRecord>(from_inp[k]))));
+    st.push_back(toml_solver.solve(
+        format::to_wheelrail_problem(std::get<format::WheelRailRecord>(from_toml[k]))));
+    ASSERT_TRUE(si[k].converged) << si[k].message;
+    ASSERT_EQ(si[k].patches.size(), 1u);
+    ASSERT_EQ(st[k].patches.size(), 1u);
+    EXPECT_EQ(st[k].force_tr.x, si[k].force_tr.x);
+    EXPECT_EQ(st[k].force_tr.y, si[k].force_tr.y);
+    EXPECT_EQ(st[k].force_tr.z, si[k].force_tr.z);
+    EXPECT_EQ(st[k].vpitch_rad_s, si[k].vpitch_rad_s);
+    EXPECT_EQ(st[k].patches[0].solution.totals.pmax, si[k].patches[0].solution.totals.pmax);
+    EXPECT_EQ(st[k].patches[0].solution.totals.contact_area,
+              si[k].patches[0].solution.totals.contact_area);
+  }
   const double eps = 1e-5;  // EPS of the file
-  EXPECT_NEAR(si.force_tr.z, 1e5, 10.0 * eps * 1e5);
-  const WheelRailPatch& p = si.patches[0];
+  EXPECT_NEAR(si[0].force_tr.z, 1e5, 10.0 * eps * 1e5);
+  const WheelRailPatch& p = si[0].patches[0];
   const double fn = p.solution.totals.fn;
-  EXPECT_NEAR(si.force_tr.z, fn * std::cos(p.contact_angle_rad), 1e-9 * fn);
-  EXPECT_NEAR(si.force_tr.y, -fn * std::sin(p.contact_angle_rad), 1e-9 * fn);
-  EXPECT_EQ(si.force_tr.x, 0.0);
+  EXPECT_NEAR(si[0].force_tr.z, fn * std::cos(p.contact_angle_rad), 1e-9 * fn);
+  EXPECT_NEAR(si[0].force_tr.y, -fn * std::sin(p.contact_angle_rad), 1e-9 * fn);
+  EXPECT_EQ(si[0].force_tr.x, 0.0);
+  // Case 2: F_x/F_z = FX_WS/FZ within EPS·μ, the wheel faster than free rolling, and PMAX and
+  // the approach those of case 1 scaled by Hertz (∝ FN^(1/3), FN^(2/3)) within 0.1 %: FN
+  // differs by the lateral force's share of FZ (F_s·sin δ ≈ 0.2 % of FZ).
+  EXPECT_NEAR(si[1].force_ws.x / si[1].force_tr.z, -0.25, eps * 0.5);
+  EXPECT_LT(si[1].vpitch_rad_s, -38888.9 / 460.0);
+  const Totals& rolling = si[1].patches[0].solution.totals;
+  const double ratio = rolling.fn / fn;
+  const double pmax = p.solution.totals.pmax * std::cbrt(ratio);
+  const double pen = p.solution.totals.pen * std::pow(ratio, 2.0 / 3.0);
+  EXPECT_NEAR(rolling.pmax, pmax, 1e-3 * pmax);
+  EXPECT_NEAR(rolling.pen, pen, 1e-3 * pen);
 }
 
 TEST(TomlWheelRail, MasslessRailRoundTrip) {
