@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
   add(add_table_command(app, *distribution));
   add(add_plot_command(app));
   add(add_lookup_command(app, *distribution));
+  add(add_fe_advice_command(app));
 
   try {
     app.parse(argc, argv);
