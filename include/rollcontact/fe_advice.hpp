@@ -124,7 +124,7 @@ struct FeContactSettings {
   double time_step_scale = default_time_step_scale;  ///< TSSFAC
   double calc_time_step_s = 0.0;  ///< Δt_calc given; 0: TSSFAC × Courant(smallest element)
   double nodal_mass_factor = default_nodal_mass_factor;  ///< β in m = β·ρ·C_d³
-  double vdc_percent = 80.0;  ///< contact damping VDC [% of critical] (LS-DYNA's default)
+  double vdc_percent = 80.0;  ///< contact damping VDC [% of critical] (the paper's reference)
 };
 
 /// Throws InvalidValueError for a non-positive size, factor or step, a negative VDC, or a bad
