@@ -43,4 +43,8 @@ CommandRunner add_dynamic_command(CLI::App& app);
 /// FILE --at ...` evaluates one.
 CommandRunner add_lookup_command(CLI::App& app, batch::Distribution& distribution);
 
+/// `rollcontact fe-advice`: contact time steps, stability and pressure error of explicit-FE
+/// penalty contact per penalty factor (docs/fe-advice.md).
+CommandRunner add_fe_advice_command(CLI::App& app);
+
 }  // namespace rollcontact::cli

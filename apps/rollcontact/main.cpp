@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   add(add_plot_command(app));
   add(add_lookup_command(app, *distribution));
   add(add_dynamic_command(app));
+  add(add_fe_advice_command(app));
 
   try {
     app.parse(argc, argv);

@@ -21,6 +21,8 @@ set(allowed_post "post;elastic;core;grid")
 set(allowed_contact "contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 set(allowed_wheelrail "wheelrail;contact;post;simplified;tangential;physics;normal;geometry;elastic;core;grid")
 set(allowed_dynamics "dynamics")
+# The FE advice solves through the public API (rollcontact/solve.hpp) only.
+set(allowed_fe_advice "fe_advice")
 set(allowed_format/text "format/text")
 set(allowed_format/profiles "format/profiles;format/text")
 set(allowed_format/inp "format/inp;format/profiles;format/text")
@@ -59,7 +61,7 @@ function(check_folder folder files)
 endfunction()
 
 foreach(folder model core grid physics lookup elastic elastic/operators geometry normal tangential simplified post contact wheelrail
-               dynamics format/text format/profiles format/inp format/toml format/report format/hdf5 batch
+               dynamics fe_advice format/text format/profiles format/inp format/toml format/report format/hdf5 batch
                bindings/c bindings/python)
   file(GLOB files "${ROOT}/src/${folder}/*.hpp" "${ROOT}/src/${folder}/*.cpp")
   check_folder(${folder} "${files}")
