@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "batch/run_input.hpp"
 #include "commands.hpp"
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/inp_writer.hpp"
@@ -47,8 +48,7 @@ int convert(const ConvertSettings& s) {
     format::write_inp_file(out, problems);
     return report(s, in, out, problems.size(), problems);
   }
-  const std::vector<format::InputCase> cases =
-      is_toml(in) ? format::read_toml_input_file(in) : format::read_input_cases(in);
+  const std::vector<format::InputCase> cases = batch::read_input_file(in);
   format::write_toml_input_file(out, cases);
   std::vector<format::CaseRecord> identities;
   for (const auto& c : cases)

@@ -13,10 +13,9 @@
 #include <variant>
 #include <vector>
 
+#include "batch/run_input.hpp"
 #include "commands.hpp"
-#include "format/inp/inp_reader.hpp"
 #include "format/inp/to_wheelrail.hpp"
-#include "format/toml/toml_case_reader.hpp"
 #include "rollcontact/dynamics.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -36,10 +35,7 @@ struct DynamicOptions {
 };
 
 model::WheelRailProblem wheel_rail_case(const DynamicOptions& o) {
-  const std::filesystem::path path(o.input);
-  const std::vector<format::InputCase> cases = path.extension() == ".toml"
-                                                   ? format::read_toml_input_file(path)
-                                                   : format::read_input_cases(path);
+  const std::vector<format::InputCase> cases = batch::read_input_file(o.input);
   for (const format::InputCase& c : cases) {
     const auto* w = std::get_if<format::WheelRailRecord>(&c);
     if (w == nullptr || (o.case_number != 0 && w->case_number != o.case_number)) continue;

@@ -344,13 +344,13 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
   return result;
 }
 
-namespace {
-
-std::vector<format::InputCase> read_problems(const std::filesystem::path& input) {
+std::vector<format::InputCase> read_input_file(const std::filesystem::path& input) {
   // TOML case files (docs/case-files.md) by extension; everything else is CONTACT .inp.
   if (input.extension() == ".toml") return format::read_toml_input_file(input);
   return format::read_input_cases(input);
 }
+
+namespace {
 
 /// Every case's values pass the model's check before anything is solved or written, so that a
 /// bad value anywhere is an input error naming file, line and case (exit 2, nothing written),
@@ -423,7 +423,7 @@ void refuse_overwriting_input(const std::filesystem::path& input,
 
 double estimated_run_cost(const std::filesystem::path& input) {
   double cost = 0.0;
-  for (const format::InputCase& c : read_problems(input)) {
+  for (const format::InputCase& c : read_input_file(input)) {
     if (const auto* w = std::get_if<format::WheelRailRecord>(&c)) {
       const bool force = w->digits.n == 1;
       const double load = force && w->motion.fz > 0.0 ? w->motion.fz / 1e4 : 1.0;
@@ -444,7 +444,7 @@ RunResult run_input_file(const std::filesystem::path& input, const RunOptions& o
   const std::filesystem::path stem = dir / input.stem();
   refuse_overwriting_input(input, stem);
   const auto start = std::chrono::steady_clock::now();
-  std::vector<format::InputCase> problems = read_problems(input);
+  std::vector<format::InputCase> problems = read_input_file(input);
   validate_cases(problems);
   const double read_seconds = seconds_since(start);
   // One process checks (and creates) the folder; the others wait for it before they write.

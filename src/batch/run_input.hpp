@@ -16,6 +16,10 @@
 
 namespace rollcontact::batch {
 
+/// The cases of an input file: a TOML case file (docs/case-files.md) by its extension `.toml`,
+/// anything else CONTACT's `.inp` format. Throws InputError naming file and line.
+std::vector<format::InputCase> read_input_file(const std::filesystem::path& input);
+
 /// Result of one case of a run.
 struct CaseOutcome {
   /// The module-3 case, or the identity (number, digits, source) of a module-1 case.

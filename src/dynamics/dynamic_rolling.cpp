@@ -119,14 +119,9 @@ DynamicRollingResult run_dynamic_rolling(const model::WheelRailProblem& problem,
                         std::sqrt(std::max(out.contact_stiffness_N_per_mm, 0.0) * sys.wheel_mass);
 
   TwoMassState state;
-  double fz = 0.0;
-  if (st.start == StartState::Equilibrium) {
-    state.z_s = state.z_w = out.z_ws_static_mm;
-    fz = contact(state.z_w, 0.0);
-  } else {
-    state.z_s = state.z_w = out.z_ws_contact_mm;
-    fz = contact(state.z_w, 0.0);
-  }
+  state.z_s = state.z_w =
+      st.start == StartState::Equilibrium ? out.z_ws_static_mm : out.z_ws_contact_mm;
+  double fz = contact(state.z_w, 0.0);
   state.v_s = state.v_w = st.initial_vz_mm_per_s;
   set_accelerations(sys, fz, v * st.dip.slope(0.0), state);
   TimeSample sample;

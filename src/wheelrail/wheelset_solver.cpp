@@ -10,6 +10,7 @@
 #include "geometry/hertz.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/wheelrail.hpp"
+#include "simplified/flexibility.hpp"
 #include "simplified/kalker_coefficients.hpp"
 #include "wheelrail/contact_search.hpp"
 #include "wheelrail/friction_variation.hpp"
@@ -233,41 +234,18 @@ void mirror_to_left(WheelRailSolution& s) {
   }
 }
 
-/// Semi-axes [mm] of the ellipse with the area and the extents of a patch's contact: a along x
-/// (rolling), b lateral; a·b = area/π with a/b the ratio of the extents.
-std::pair<double, double> equivalent_semi_axes(const Solution& s) {
-  int n = 0, ix_lo = s.grid.mx, ix_hi = -1, iy_lo = s.grid.my, iy_hi = -1;
-  for (int iy = 0; iy < s.grid.my; ++iy)
-    for (int ix = 0; ix < s.grid.mx; ++ix)
-      if (!s.pn.empty() && s.pn[s.grid.index(ix, iy)] > 0.0) {
-        ++n;
-        ix_lo = std::min(ix_lo, ix);
-        ix_hi = std::max(ix_hi, ix);
-        iy_lo = std::min(iy_lo, iy);
-        iy_hi = std::max(iy_hi, iy);
-      }
-  if (n == 0) return {0.0, 0.0};
-  const double area = n * s.grid.dx * s.grid.dy;
-  const double ratio = ((ix_hi - ix_lo + 1) * s.grid.dx) / ((iy_hi - iy_lo + 1) * s.grid.dy);
-  const double ab = area / M_PI;
-  return {std::sqrt(ab * ratio), std::sqrt(ab / ratio)};
-}
-
 /// Linear theory's d(F_x/F_z)/dVPITCH [s/rad] (spec-additions §A6): Σ G·a·b·C11·r/|V| over the
-/// patches, r the distance of the contact point below the axle, over F_z.
-double linear_pitch_slope(const WheelRailSolution& s, const model::Bodies& bodies, double v) {
-  const double g =
-      1.0 /
-      (0.5 * (1.0 / bodies.body1.shear_modulus_N_mm2 + 1.0 / bodies.body2.shear_modulus_N_mm2));
-  const double nu = 0.5 * g *
-                    (bodies.body1.poisson_ratio / bodies.body1.shear_modulus_N_mm2 +
-                     bodies.body2.poisson_ratio / bodies.body2.shear_modulus_N_mm2);
+/// patches (a, b the equivalent ellipse of each patch's contact, G and ν its combined constants),
+/// r the distance of the contact point below the axle, over F_z.
+double linear_pitch_slope(const WheelRailSolution& s, double v) {
   double slope = 0.0;
   for (const WheelRailPatch& w : s.patches) {
-    const auto [a, b] = equivalent_semi_axes(w.solution);
-    if (!(a > 0.0 && b > 0.0)) continue;
-    const double c11 = simplified::kalker_coefficients(a / b, nu).c11;
-    slope += g * a * b * c11 * std::abs(w.reference_ws.z) / std::abs(v);
+    const Solution& sol = w.solution;
+    if (sol.pn.empty()) continue;
+    const simplified::Ellipse e = simplified::equivalent_ellipse(sol.grid, sol.pn);
+    if (!(e.a > 0.0 && e.b > 0.0)) continue;
+    const double c11 = simplified::kalker_coefficients(e.a / e.b, sol.material.nu).c11;
+    slope += sol.material.g * e.a * e.b * c11 * std::abs(w.reference_ws.z) / std::abs(v);
   }
   return slope / std::max(std::abs(s.force_tr.z), 1.0);
 }
@@ -646,7 +624,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_pitch_velocity(
   st.max_iterations = problem.patch.solver.max_newton_iterations;
   // The first solve to EPS; linear theory's slope needs its patches.
   const wheelrail::PitchVelocitySample first = solve(start, eps);
-  st.slope_s_per_rad = linear_pitch_slope(result, problem.patch.bodies, v);
+  st.slope_s_per_rad = linear_pitch_slope(result, v);
   if (!(st.slope_s_per_rad > 0.0)) st.slope_s_per_rad = nominal / std::abs(v);  // no contact
   const wheelrail::PitchVelocityResult it = wheelrail::solve_pitch_velocity(st, first, solve);
   result.vpitch_rad_s = it.vpitch_rad_s;
