@@ -40,6 +40,10 @@ void check(const SprungWheel& v, const DynamicRollingSettings& st,
   positive(v.gravity_mm_per_s2, "gravity [mm/s2]");
   positive(st.distance_mm, "the distance [mm]");
   positive(st.time_step_s, "the time step [s]");
+  if (p.roller.enabled)
+    throw ProblemError(
+        "dynamic rolling: the model runs the wheel along a track; a roller rig (C1=4, 5) is not "
+        "part of it");
   positive(std::abs(p.motion.vs_mm_s), "the rolling speed VS [mm/s]");
   if (v.suspension_damping_N_s_per_mm < 0.0 || st.contact_damping_ratio < 0.0)
     throw ProblemError("dynamic rolling: damping must not be negative");

@@ -13,6 +13,37 @@ namespace {
 
 constexpr double kNoWheel = 1e30;
 
+/// Roller rig: the wheel-frame x of the locus point on the wheel's circle at profile point w
+/// (radius r): where the wheel's surface normal n (track frame) is parallel to the roller's,
+/// n_x + (∂z_roller/∂x)·n_z = 0 — the track's condition n_x = 0 with the roller's curvature
+/// (spec/wheelrail-advanced.md §4.2). Solved exactly by secants from the track's locus x0
+/// (a fixed-point iteration would diverge for a roller smaller than the wheel).
+double roller_locus_x(const PlacedProfiles& prof, const WheelsetPose& pose, double y_ws,
+                      const CurvePoint& w, double r, double x0, double x_limit) {
+  const Mat3& R = pose.rotation;
+  const auto condition = [&](double x, bool& ok) {
+    const double c = std::sqrt(std::max(r * r - x * x, 0.0));
+    const Vec3 pt = pose.centre + R * Vec3{x, y_ws, c};
+    const RailSurfacePoint rs = prof.rail_surface_at(pt.x, pt.y);
+    ok = rs.found;
+    const Vec3 n = R * Vec3{x / r, -w.dz_dy, c / r};
+    return n.x + rs.dz_dx * n.z;
+  };
+  bool ok = false;
+  double xa = x0, fa = condition(xa, ok);
+  if (!ok) return x0;
+  double xb = x0 + 1e-3 * r, fb = condition(xb, ok);
+  for (int it = 0; it < 30 && ok && fb != fa; ++it) {
+    const double xc = std::clamp(xb - fb * (xb - xa) / (fb - fa), -x_limit, x_limit);
+    xa = xb;
+    fa = fb;
+    xb = xc;
+    fb = condition(xb, ok);
+    if (std::abs(xb - xa) < 1e-10) break;
+  }
+  return ok ? xb : x0;
+}
+
 /// The contact locus sampled along the wheel profile and mapped onto the lateral grid: where
 /// several locus segments cover one grid position, the deepest wheel point counts.
 void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
@@ -35,6 +66,7 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
     const double r = r0 + w.z;
     double x = (r * w.dz_dy * R.r[0][1] - r_nom * R.r[0][2]) / R.r[0][0];
     x = std::clamp(x, -0.5 * r_nom, 0.5 * r_nom);
+    if (prof.roller()) x = roller_locus_x(prof, pose, y_off + yp, w, r, x, 0.5 * r_nom);
     const Vec3 q{x, y_off + yp, std::sqrt(std::max(r * r - x * x, 0.0))};
     Vec3 pt = pose.centre + R * q;
     if (prof.wheel_surface() != nullptr) {
@@ -100,8 +132,9 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
 
 /// Reference point and angle from the accumulated weights (physics.md §13.3 step 4).
 void finish_region(ContactRegion& r, const PlacedProfiles& prof) {
-  const double y = r.wy / r.weight;
-  r.reference = {r.wx / r.weight, y, prof.rail_at_track_y(y).z};
+  const double x = r.wx / r.weight, y = r.wy / r.weight;
+  // On the rail's (or the roller's) surface: a roller lies lower at x ≠ 0.
+  r.reference = {x, y, prof.roller() ? prof.rail_surface_at(x, y).z : prof.rail_at_track_y(y).z};
   double d = r.wd / r.weight;
   constexpr double kHalfPi = 0.5 * std::numbers::pi;
   if (std::abs(std::abs(d) - kHalfPi) < 1e-3) d = std::copysign(kHalfPi - 1e-3, d);
@@ -212,6 +245,12 @@ void turn_neighbour_angles(std::vector<ContactRegion>& patches,
 
 }  // namespace
 
+double rolling_curvature_per_mm(const model::WheelRailProblem& p) {
+  double c = 1.0 / (2.0 * p.wheelset.nominal_radius_mm);
+  if (p.roller.enabled) c += 1.0 / (2.0 * p.roller.nominal_radius_mm);
+  return c;
+}
+
 GapSamples sample_rail(const model::WheelRailProblem& p, const PlacedProfiles& prof) {
   GapSamples s;
   GapFunction& g = s.base;
@@ -234,6 +273,16 @@ GapSamples sample_rail(const model::WheelRailProblem& p, const PlacedProfiles& p
 void sample_wheel(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                   const WheelsetPose& pose_at_zero, GapSamples& s) {
   fill_locus(p, prof, pose_at_zero, s.base, s.locus_z);
+  s.rail_drop.clear();
+  if (!prof.roller()) return;
+  // The roller's surface under the locus: lower than its top by the circle's fall at x_locus.
+  const GapFunction& g = s.base;
+  s.rail_drop.assign(g.gap.size(), 0.0);
+  for (std::size_t j = 0; j < g.gap.size(); ++j) {
+    if (std::isnan(s.rail_z[j])) continue;
+    const RailSurfacePoint r = prof.rail_surface_at(g.x_locus[j], g.y(j));
+    s.rail_drop[j] = r.found ? r.z - s.rail_z[j] : kNoWheel;
+  }
 }
 
 SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfiles& prof,
@@ -246,7 +295,8 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
   std::size_t j_min = 0;
   for (std::size_t j = 0; j < n; ++j) {
     if (std::isnan(samples.rail_z[j]) || samples.locus_z[j] <= -kNoWheel) continue;
-    g.gap[j] = samples.rail_z[j] - (samples.locus_z[j] + z_ws);
+    const double drop = samples.rail_drop.empty() ? 0.0 : samples.rail_drop[j];
+    g.gap[j] = samples.rail_z[j] + drop - (samples.locus_z[j] + z_ws);
     if (g.gap[j] < res.min_gap_mm) {
       res.min_gap_mm = g.gap[j];
       j_min = j;
@@ -259,7 +309,7 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
   res.minimum_at_profile_end = res.min_gap_mm < kNoWheel && (j_min == 0 || j_min + 1 == n);
 
   // Regions: maximal runs of negative gap, one guard sample on each side.
-  const double c = 1.0 / (2.0 * p.wheelset.nominal_radius_mm);
+  const double c = rolling_curvature_per_mm(p);
   std::vector<ContactRegion> regions;
   for (std::size_t j = 0; j < n;) {
     if (!(g.gap[j] < 0.0)) {

@@ -62,7 +62,15 @@ struct GapSamples {
   GapFunction base;             ///< grid, x of the locus and rail inclination (gap unset)
   std::vector<double> rail_z;   ///< rail height per sample [mm] (NaN: outside the rail)
   std::vector<double> locus_z;  ///< locus height at z_ws = 0 [mm] (−huge: no wheel)
+  /// Roller rig: how much lower the roller's surface lies under the locus than its top [mm];
+  /// empty on a track.
+  std::vector<double> rail_drop;
 };
+
+/// The combined curvature of the two surfaces along the rolling direction, 1/(2·NOMRADW) (+
+/// 1/(2·NOMRADR) on a roller rig; an internal roller's negative radius lowers it) [1/mm]: the
+/// weights of the reference point and the patch's length.
+double rolling_curvature_per_mm(const model::WheelRailProblem& problem);
 /// The rail part (grid, heights, inclinations): the same for every case with the same rail
 /// placement and DS.
 GapSamples sample_rail(const model::WheelRailProblem& problem, const PlacedProfiles& profiles);

@@ -30,11 +30,14 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
     CurveHint hint;  // the wheel profile segment, carried along the row
     for (int i = 0; i < mx; ++i) {
       const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i)) * f.ex;
+      // A rail is the same all along a row; a roller falls away from its top.
+      double t_rail_here = t_rail;
+      if (prof.roller() && !rail_surface_along(prof, point, f.en, t_rail, t_rail_here)) continue;
       if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel, &hint)) {
-        t_wheel = t_rail;
+        t_wheel = t_rail_here;
         continue;
       }
-      const double v = t_rail - t_wheel;
+      const double v = t_rail_here - t_wheel;
       h[static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i)] =
           v;
       h_min = std::min(h_min, v);
@@ -127,8 +130,57 @@ ContactFrame contact_frame(const ContactRegion& region) {
   return f;
 }
 
+namespace {
+
+/// Creepages from the material velocities v of the rail (P) and wheel (Q) points and the bodies'
+/// angular velocities ω, relative to the rolling speed: ξ, η = (v_P − v_Q)·(e_x, e_s)/V,
+/// φ = (ω_P − ω_Q)·e_n/V (physics.md §13.5).
+void set_creepages(PatchKinematics& k, const ContactFrame& f, Vec3 v_P, Vec3 v_Q, Vec3 omega_P,
+                   Vec3 omega_Q) {
+  if (!(k.veloc_mm_s >= 1e-6)) return;
+  const Vec3 dv = v_P - v_Q;
+  k.xi = dot(dv, f.ex) / k.veloc_mm_s;
+  k.eta = dot(dv, f.es) / k.veloc_mm_s;
+  k.phi_per_mm = dot(omega_P - omega_Q, f.en) / k.veloc_mm_s;
+}
+
+/// Roller rig (spec/wheelrail-advanced.md §4.3): the contact stays where it is and both bodies
+/// turn through it — the roller about its axle (0, y, z_axle) at RPITCH (yawing at
+/// −r·RPITCH·CURV, r the contact's distance from the axle), the wheel about its own. V is the
+/// mean material speed through the contact, χ = 0 when the material leaves towards −x.
+PatchKinematics roller_kinematics(const model::WheelRailProblem& p, const WheelsetPose& pose,
+                                  const PlacedProfiles& prof, const ContactFrame& f,
+                                  double pen_mm) {
+  const model::WheelsetState& m = p.motion;
+  const model::RailState& rs = p.rail_state;
+  const Vec3 P = f.origin;
+  const Vec3 axle{0.0, 0.0, prof.roller_axle_z_mm()};
+  const double rpitch = p.roller.pitch_rate_rad_s;
+  const double yaw_rate = -std::abs(P.z - axle.z) * rpitch * p.track.curvature_per_mm;
+  const Vec3 rail_origin{0.0, prof.rail_y_mm(), prof.rail_z_mm()};
+  const Vec3 omega_P{rs.vroll_rad_s, rpitch, yaw_rate};
+  const Vec3 v_P = cross(Vec3{0.0, rpitch, yaw_rate}, P - axle) +
+                   Vec3{0.0, rs.vy_mm_s, rs.vz_mm_s} +
+                   cross(Vec3{rs.vroll_rad_s, 0.0, 0.0}, P - rail_origin);
+  const Vec3 r_Q = (P + pen_mm * f.en) - pose.centre;
+  const Vec3 omega_Q = pose.rotation * Vec3{m.vroll_rad_s, m.vpitch_rad_s, m.vyaw_rad_s};
+  const Vec3 v_Q = Vec3{m.vs_mm_s, m.vy_mm_s, m.vz_mm_s} + cross(omega_Q, r_Q);
+  PatchKinematics k;
+  const double vp = dot(v_P, f.ex), vq = dot(v_Q, f.ex);
+  k.veloc_mm_s = 0.5 * std::abs(vp + vq);
+  const bool forward =
+      (std::abs(vp) >= std::abs(vq) && vp <= 0.0) || (std::abs(vq) > std::abs(vp) && vq <= 0.0);
+  k.chi_rad = forward ? 0.0 : std::numbers::pi;
+  k.dq_mm = p.search.dq_rel * p.search.dx_mm;
+  set_creepages(k, f, v_P, v_Q, omega_P, omega_Q);
+  return k;
+}
+
+}  // namespace
+
 PatchKinematics patch_kinematics(const model::WheelRailProblem& p, const WheelsetPose& pose,
                                  const PlacedProfiles& prof, const ContactFrame& f, double pen_mm) {
+  if (p.roller.enabled) return roller_kinematics(p, pose, prof, f, pen_mm);
   const model::WheelsetState& m = p.motion;
   const model::RailState& rs = p.rail_state;
   // Rail material point P: rail deviation rates and the track's yaw rate in a curve.
@@ -152,12 +204,7 @@ PatchKinematics patch_kinematics(const model::WheelRailProblem& p, const Wheelse
                        (std::abs(v_roll) > std::abs(v_est) && v_roll <= 0.0);
   k.chi_rad = forward ? 0.0 : std::numbers::pi;
   k.dq_mm = p.search.dq_rel * p.search.dx_mm;
-  if (k.veloc_mm_s >= 1e-6) {
-    const Vec3 dv = v_P - v_Q;
-    k.xi = dot(dv, f.ex) / k.veloc_mm_s;
-    k.eta = dot(dv, f.es) / k.veloc_mm_s;
-    k.phi_per_mm = dot(omega_P - omega_Q, f.en) / k.veloc_mm_s;
-  }
+  set_creepages(k, f, v_P, v_Q, omega_P, omega_Q);
   return k;
 }
 

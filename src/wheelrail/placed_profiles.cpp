@@ -7,8 +7,9 @@ namespace rollcontact::wheelrail {
 
 namespace {
 
+/// The rail's roll: DROLLR against the cant (a roller rig has none).
 double rail_roll_of(const model::WheelRailProblem& p) {
-  return -p.track.cant_rad + p.rail_state.droll_rad;
+  return (p.roller.enabled ? 0.0 : -p.track.cant_rad) + p.rail_state.droll_rad;
 }
 
 bool same_slices(const SlicedProfile& a, const SlicedProfile& b) {
@@ -83,7 +84,8 @@ PlacedProfiles::PlacedProfiles(const model::WheelRailProblem& p)
       ytape_(p.wheelset.tape_circle_y_mm),
       rail_(p.rail, true, rail_roll_of(p), 0.0, 0.0),
       wheel_(p.wheel, false),
-      wheel_surface_(surface_of(p.wheel)) {
+      wheel_surface_(surface_of(p.wheel)),
+      roller_(p.roller.enabled) {
   if (wheel_surface_) {
     // The tape circle of a sliced wheel is taken at θ = 0 (a fixed r0 for every rotation).
     wheel_ = cross_section_curve(*wheel_surface_, p.wheel.smoothing, 0.0);
@@ -103,15 +105,17 @@ PlacedProfiles::PlacedProfiles(const model::WheelRailProblem& p)
 }
 
 bool PlacedProfiles::same_curves(const model::WheelRailProblem& p) const {
-  return rail_roll_of(p) == rail_roll_ && p.track.gauge_height_mm == gauge_height_ &&
-         p.wheelset.tape_circle_y_mm == ytape_ && same_profile(p.rail, rail_profile_) &&
-         same_profile(p.wheel, wheel_profile_);
+  return p.roller.enabled == roller_ && rail_roll_of(p) == rail_roll_ &&
+         p.track.gauge_height_mm == gauge_height_ && p.wheelset.tape_circle_y_mm == ytape_ &&
+         same_profile(p.rail, rail_profile_) && same_profile(p.wheel, wheel_profile_);
 }
 
 void PlacedProfiles::place(const model::WheelRailProblem& p) {
   if (gauge_y_) {
     rail_y_ = 0.5 * p.track.gauge_width_mm - *gauge_y_ + p.rail_state.dy_mm;
-    rail_z_ = -rail_top_z_ + p.rail_state.dz_mm;
+    // A track's rail top lies in the track plane; a roller's profile origin does (its z values
+    // are offsets to NOMRADR, spec/wheelrail-advanced.md §4.2).
+    rail_z_ = (roller_ ? 0.0 : -rail_top_z_) + p.rail_state.dz_mm;
   } else {
     rail_y_ = p.track.rail_y0_mm + p.rail_state.dy_mm;
     rail_z_ = p.track.rail_z0_mm + p.rail_state.dz_mm;
@@ -119,6 +123,10 @@ void PlacedProfiles::place(const model::WheelRailProblem& p) {
   const model::WheelsetGeometry& w = p.wheelset;
   wheel_y_offset_ = 0.5 * w.flange_back_distance_mm - w.flange_back_position_mm;
   wheel_r0_ = w.nominal_radius_mm - z_tape_;
+  if (roller_) {
+    roller_axle_z_ = rail_z_ + p.roller.nominal_radius_mm;
+    roller_sign_ = p.roller.nominal_radius_mm < 0.0 ? -1.0 : 1.0;
+  }
   if (wheel_surface_ && -p.motion.pitch_rad != wheel_theta_) {
     wheel_theta_ = -p.motion.pitch_rad;
     wheel_ = cross_section_curve(*wheel_surface_, wheel_profile_.smoothing, wheel_theta_);
@@ -130,6 +138,27 @@ CurvePoint PlacedProfiles::rail_at_track_y(double y) const {
   c.y = y;
   c.z += rail_z_;
   return c;
+}
+
+RailSurfacePoint PlacedProfiles::rail_surface_at(double x, double y) const {
+  const CurvePoint c = rail_at_track_y(y);
+  RailSurfacePoint s;
+  if (!c.found) return s;
+  if (!roller_) {
+    s = {true, c.z, 0.0, c.dz_dy};
+    return s;
+  }
+  // The section at y is a circle of radius r about the axle: z = z_axle ∓ √(r² − x²), written
+  // as the fall from the top, x²/(r + √(r² − x²)), to keep its digits for a large roller.
+  const double r = std::abs(c.z - roller_axle_z_);
+  const double root2 = r * r - x * x;
+  if (!(root2 > 0.0)) return s;
+  const double root = std::sqrt(root2);
+  s.found = true;
+  s.z = c.z + roller_sign_ * x * x / (r + root);
+  s.dz_dx = roller_sign_ * x / root;
+  s.dz_dy = c.dz_dy * r / root;
+  return s;
 }
 
 }  // namespace rollcontact::wheelrail

@@ -14,6 +14,13 @@
 
 namespace rollcontact::wheelrail {
 
+/// The rail (or roller) surface above a point of the track plane: height z [mm, down] and its
+/// slopes (found = false outside the profile).
+struct RailSurfacePoint {
+  bool found = false;
+  double z = 0.0, dz_dx = 0.0, dz_dy = 0.0;
+};
+
 class PlacedProfiles {
  public:
   explicit PlacedProfiles(const model::WheelRailProblem& problem);
@@ -37,8 +44,15 @@ class PlacedProfiles {
   double rail_y_mm() const noexcept { return rail_y_; }
   double rail_z_mm() const noexcept { return rail_z_; }
   double rail_roll_rad() const noexcept { return rail_roll_; }
-  /// Rail height z [mm, down] and slope dz/dy at track position y (found = false outside).
+  /// Rail height z [mm, down] and slope dz/dy at track position y (found = false outside): the
+  /// rail's cross-section, on a roller rig its principal profile (the section at x = 0).
   CurvePoint rail_at_track_y(double y) const;
+  /// The rail surface at (x, y): the prismatic rail's cross-section, or the roller's body of
+  /// revolution, which falls away from x = 0 (rises towards the wheel on an internal roller).
+  RailSurfacePoint rail_surface_at(double x, double y) const;
+  bool roller() const noexcept { return roller_; }
+  /// Roller rig: height of the roller axle [mm, down] (the profile origin's + NOMRADR).
+  double roller_axle_z_mm() const noexcept { return roller_axle_z_; }
   /// Wheel-profile y of the wheelset-frame lateral coordinate: y_p = y_ws − offset.
   double wheel_y_offset_mm() const noexcept { return wheel_y_offset_; }
   /// Radius of the wheel at profile z: r = r0 + z, r0 = NOMRADW − z_w(YTAPE).
@@ -58,6 +72,9 @@ class PlacedProfiles {
   double z_tape_ = 0.0;
   double rail_y_ = 0.0, rail_z_ = 0.0;
   double wheel_y_offset_ = 0.0, wheel_r0_ = 0.0;
+  bool roller_ = false;
+  double roller_axle_z_ = 0.0;
+  double roller_sign_ = 1.0;  ///< +1 external roller (axle below), −1 internal (axle above)
 };
 
 }  // namespace rollcontact::wheelrail

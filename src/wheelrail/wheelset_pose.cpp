@@ -78,6 +78,21 @@ bool wheel_surface_along(const PlacedProfiles& profiles, const WheelsetPose& pos
 
 bool rail_surface_along(const PlacedProfiles& profiles, Vec3 from, Vec3 dir, double t0, double& t) {
   t = t0;
+  if (profiles.roller()) {
+    // f(t) = z_surface(x(t), y(t)) − z(t) on the roller's body of revolution.
+    for (int it = 0; it < 30; ++it) {
+      const Vec3 q = from + t * dir;
+      const RailSurfacePoint r = profiles.rail_surface_at(q.x, q.y);
+      if (!r.found) return false;
+      const double f = r.z - q.z;
+      const double df = r.dz_dx * dir.x + r.dz_dy * dir.y - dir.z;
+      if (df == 0.0 || !std::isfinite(df)) return false;
+      const double step = f / df;
+      t -= step;
+      if (std::abs(step) < 1e-11) return true;
+    }
+    return false;
+  }
   for (int it = 0; it < 30; ++it) {
     const CurvePoint r = profiles.rail_at_track_y(from.y + t * dir.y);
     if (!r.found) return false;

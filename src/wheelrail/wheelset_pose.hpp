@@ -23,7 +23,7 @@ WheelsetPose pose_of(const model::WheelRailProblem& problem, double z_ws_mm);
 bool wheel_surface_along(const PlacedProfiles& profiles, const WheelsetPose& pose, Vec3 from,
                          Vec3 dir, double t0, double& t, CurveHint* hint = nullptr);
 
-/// Same for the (prismatic) rail surface, in the track's y-z plane.
+/// Same for the rail surface: the prismatic rail in the track's y-z plane, or the roller.
 bool rail_surface_along(const PlacedProfiles& profiles, Vec3 from, Vec3 dir, double t0, double& t);
 
 }  // namespace rollcontact::wheelrail

@@ -144,7 +144,10 @@ WheelRailPatch describe_patch(const model::WheelRailProblem& p, const PlacedProf
   w.reference_tr = to_public(ref);
   w.contact_angle_rad = d;
   // Rail-profile coordinates: undo the rail's shift and roll.
-  const double ry = ref.y - prof.rail_y_mm(), rz = ref.z - prof.rail_z_mm();
+  // A roller's reference lies below its principal profile when x ≠ 0; the profile point is the
+  // one at the same lateral position.
+  const double z_profile = prof.roller() ? prof.rail_at_track_y(ref.y).z : ref.z;
+  const double ry = ref.y - prof.rail_y_mm(), rz = z_profile - prof.rail_z_mm();
   const double a = prof.rail_roll_rad();
   w.y_rail_mm = std::cos(a) * ry + std::sin(a) * rz;
   w.z_rail_mm = -std::sin(a) * ry + std::cos(a) * rz;
@@ -381,7 +384,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
     return solve_at(p, st.target_N / k, p.first_of_sequence);
   }
   // Iterate 1: Hertz with the wheel's rolling curvature and the gap's lateral curvature.
-  const double a1 = 1.0 / (2.0 * p.wheelset.nominal_radius_mm);
+  const double a1 = wheelrail::rolling_curvature_per_mm(p);
   const double b1 = std::max(s0.curvature_at_min, 1e-4);
   const double cos_min = std::max(0.5, std::cos(s0.delta_at_min_rad));
   const double hertz_force = k > 0.0 ? 1e4 : p.motion.fz_N;
@@ -584,10 +587,11 @@ WheelRailSolution WheelsetSolver::Impl::solve_pitch_velocity(
         "other");
   if (problem.patch.tangential.kind == model::TangentialKind::None)
     throw ProblemError("a prescribed longitudinal force FX_WS (F=1) requires a tangential problem");
-  const double v = problem.motion.vs_mm_s;
+  const double v = model::rolling_speed_mm_s(problem);
   if (!(std::abs(v) > 0.0))
     throw ProblemError(
-        "a prescribed longitudinal force FX_WS (F=1) requires a rolling velocity VS");
+        "a prescribed longitudinal force FX_WS (F=1) requires a rolling velocity VS (roller rig: "
+        "RPITCH)");
   const double eps = problem.patch.solver.tolerance;
   const double mu = std::max(problem.patch.friction.static_coefficient, 1e-3);
   model::WheelRailProblem q = problem;
@@ -636,7 +640,26 @@ WheelRailSolution WheelsetSolver::Impl::solve_pitch_velocity(
   return result;
 }
 
+namespace {
+
+/// A roller must have a radius, and an internal one must be wider than the wheel inside it.
+void check_roller(const model::WheelRailProblem& p) {
+  if (!p.roller.enabled) return;
+  const double r = p.roller.nominal_radius_mm;
+  if (!std::isfinite(r) || std::abs(r) < 1.0)
+    throw ProblemError(fmt::format(
+        "roller rig: the roller radius NOMRADR = {:g} mm must be at least 1 mm in magnitude", r));
+  if (r < 0.0 && -r <= p.wheelset.nominal_radius_mm)
+    throw ProblemError(fmt::format(
+        "roller rig: an internal roller (NOMRADR = {:g} mm < 0) must be wider than the wheel "
+        "inside it (NOMRADW = {:g} mm)",
+        r, p.wheelset.nominal_radius_mm));
+}
+
+}  // namespace
+
 WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
+  check_roller(problem);
   impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
   if (problem.vertical == model::VerticalLoading::Force && !(problem.motion.fz_N >= 1e-9)) {
     // CONTACT's early return (spec/wheelrail-advanced.md §6.3): a wheel without load is not in

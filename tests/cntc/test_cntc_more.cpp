@@ -375,4 +375,36 @@ TEST(CntcWheelRail, MasslessRailDeflectionsAreLocationOutputs18And19) {
   EXPECT_NEAR(loc[17], g[1] / 2e4, 2.0 * eps);
 }
 
+TEST(CntcWheelRail, RollerRigThroughTheLibrary) {
+  // examples/roller_rig.inp case 1 (C1 = 5, NOMRADR 685 mm) read through the library; then the
+  // roller becomes a ring of 1500 mm (cntc_settrackdimensions Z = 1: GAUGHT, GAUGSQ, GAUGWD,
+  // CANT, NOMRADR) turning at the same surface speed (cntc_setwheelsetvelocity: RPITCH first):
+  // the wheel conforms to it and the pressure falls, FZ stays at 10 kN.
+  const std::string path =
+      (std::filesystem::path(ROLLCONTACT_REPO_EXAMPLES_DIR) / "roller_rig.inp").string();
+  int ire = 72, inp = 1988, len = static_cast<int>(path.size()), ierror = -1, icp = -1;
+  int patch = 1, n24 = 24;
+  cntc_readinpfile(&ire, &inp, path.c_str(), &len, &ierror);
+  ASSERT_EQ(ierror, 0);
+  cntc_calculate(&ire, &icp, &ierror);
+  ASSERT_EQ(ierror, 0);
+  std::array<double, 24> g{};
+  cntc_getglobalforces(&ire, &icp, &n24, g.data());
+  EXPECT_NEAR(g[2], 1e4, 1e4 * 1e-5 * 1.01);
+  double pmax_roller = 0.0, pmax_ring = 0.0;
+  cntc_getmaximumpressure(&ire, &patch, &pmax_roller);
+  int z = 1, n5 = 5, e = 2, n6 = 6;
+  double track[5] = {14.0, 0.0, 1435.0, 0.0, -1500.0};
+  cntc_settrackdimensions(&ire, &z, &n5, track);
+  double velocity[6] = {-2000.0 / 1500.0, 0.0, 0.0, 0.0, 0.0, -4.34811810};
+  cntc_setwheelsetvelocity(&ire, &e, &n6, velocity);
+  cntc_calculate(&ire, &icp, &ierror);
+  ASSERT_EQ(ierror, 0);
+  cntc_getglobalforces(&ire, &icp, &n24, g.data());
+  EXPECT_NEAR(g[2], 1e4, 1e4 * 1e-5 * 1.01);
+  cntc_getmaximumpressure(&ire, &patch, &pmax_ring);
+  EXPECT_LT(pmax_ring, 0.8 * pmax_roller);
+  cntc_finalize(&ire);
+}
+
 }  // namespace

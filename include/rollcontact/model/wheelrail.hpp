@@ -53,13 +53,32 @@ struct ContactSearchSettings {
   int max_elements = 20000;                 ///< NPOT_MAX: larger grids are coarsened (dx, ds ×2)
 };
 
-/// Track and rail position (Z=1,3; track, not roller rig).
+/// Track and rail position (Z=1,3). On a roller rig the same placement positions the roller
+/// profile (GAUGHT > 0: laterally only, its origin at DZRAIL) and the cant is ignored.
 struct Track {
   double gauge_height_mm = 14.0;              ///< > 0: the rail is placed by its gauge point
   double gauge_width_mm = 1435.0;             ///< used when gauge_height_mm > 0
   double rail_y0_mm = 0.0, rail_z0_mm = 0.0;  ///< used when gauge_height_mm <= 0
   double cant_rad = 0.0;
   double curvature_per_mm = 0.0;
+};
+
+/// A roller rig instead of a track (CONTACT's C1 = 4, 5; spec/wheelrail-advanced.md §4): the
+/// rail profile is the roller's, a body of revolution about an axle parallel to the track's y
+/// axis at x = 0, NOMRADR below the profile origin (z down). The wheelset does not move forward
+/// (VS = 0); the roller turns at RPITCH and carries its surface past the contact.
+struct RollerRig {
+  bool enabled = false;
+  /// NOMRADR: distance from the roller axle to the roller profile's origin [mm]. Negative: an
+  /// internal roller (a ring, the wheel runs on its inside, the axle lies above the contact);
+  /// its magnitude must exceed the wheel's radius.
+  double nominal_radius_mm = 0.0;
+  /// RPITCH: the roller's angular velocity about its axle [rad/s]; on an external roller,
+  /// positive for forward rolling (the wheel's VPITCH then negative).
+  double pitch_rate_rad_s = 0.0;
+  /// Speed of the roller surface at its nominal radius, RPITCH·NOMRADR [mm/s]: the rolling speed
+  /// that VS is on a track.
+  double surface_speed_mm_s() const noexcept { return pitch_rate_rad_s * nominal_radius_mm; }
 };
 
 /// Rail deviations from the track design and their rates.
@@ -78,11 +97,13 @@ struct WheelsetGeometry {
 
 /// Wheelset position, orientation and velocities in track coordinates.
 struct WheelsetState {
-  double s_mm = 0.0, y_mm = 0.0;
+  double s_mm = 0.0;  ///< S_WS along the track (roller rig: X_WS, reported only)
+  double y_mm = 0.0;
   double z_mm = 0.0;  ///< vertical position (prescribed position)
   double fz_N = 0.0;  ///< vertical force on the rail (prescribed force)
   double roll_rad = 0.0, yaw_rad = 0.0, pitch_rad = 0.0;
-  double vs_mm_s = 0.0, vy_mm_s = 0.0, vz_mm_s = 0.0;
+  double vs_mm_s = 0.0;  ///< forward velocity VS (roller rig: 0, the roller turns instead)
+  double vy_mm_s = 0.0, vz_mm_s = 0.0;
   double vroll_rad_s = 0.0, vyaw_rad_s = 0.0, vpitch_rad_s = 0.0;
   /// Longitudinal force on the rail in wheelset coordinates FX_WS [N] (LongitudinalLoading::Force
   /// only; CONTACT's F=1): the pitch velocity is then solved for.
@@ -129,6 +150,7 @@ struct WheelRailProblem {
   PatchProblem patch;
   WheelRailProfile rail, wheel;
   Track track;
+  RollerRig roller;  ///< C1 = 4, 5; disabled: the wheel runs on a track
   RailState rail_state;
   WheelsetGeometry wheelset;
   WheelsetState motion;
@@ -144,5 +166,11 @@ struct WheelRailProblem {
   /// ANALYN on a patch combined from several regions. The `.inp` route sets it.
   bool validated_only = false;
 };
+
+/// The rolling speed of a problem [mm/s]: VS on a track, RPITCH·NOMRADR on a roller rig (the
+/// wheel's free-rolling VPITCH is about −speed/NOMRADW in both).
+inline double rolling_speed_mm_s(const WheelRailProblem& p) noexcept {
+  return p.roller.enabled ? p.roller.surface_speed_mm_s() : p.motion.vs_mm_s;
+}
 
 }  // namespace rollcontact::model

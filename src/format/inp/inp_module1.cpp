@@ -299,7 +299,12 @@ void read_track_line(InpStream& in, WheelRailRecord& p) {
   }
   if (roller) {
     tr.nomradr = g.real(3);
-    require_positive(in, g.line(3), "NOMRADR", tr.nomradr);
+    // Negative: an internal roller (a ring around the wheel, spec/wheelrail-advanced.md §4.1).
+    if (!(std::abs(tr.nomradr) >= 1.0))
+      in.fail(g.line(3),
+              fmt::format("NOMRADR = {} must be at least 1 mm in magnitude (negative: an internal "
+                          "roller)",
+                          tr.nomradr));
   } else {
     tr.cant = g.real(3);
   }

@@ -70,7 +70,6 @@ CaseRecord settings_record(const WheelRailRecord& r) {
 
 void check_supported(const WheelRailRecord& r) {
   const ControlDigits& d = r.digits;
-  if (r.is_roller()) not_supported(fmt::format("roller rigs (C1={})", r.config));
   if (r.discretisation.method != 2)
     not_supported(fmt::format("contact search D={}", r.discretisation.method));
   if (d.t == 1 || d.t == 2) not_supported(fmt::format("transient rolling or shifts T={}", d.t));
@@ -116,7 +115,8 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
     if (!p.wheel.slices.slices.empty()) p.wheel.points = p.wheel.slices.slices.front();
   }
   const TrackDimensions& tr = r.track;
-  p.track = {tr.gaught, tr.gaugwd, tr.raily0, tr.railz0, tr.cant, tr.curv};
+  p.track = {tr.gaught, tr.gaugwd, tr.raily0, tr.railz0, r.is_roller() ? 0.0 : tr.cant, tr.curv};
+  if (r.is_roller()) p.roller = {true, tr.nomradr, r.motion.rpitch};
   const RailDeviations& rd = r.rail_deviations;
   p.rail_state = {rd.dy, rd.dz, rd.droll, rd.vy, rd.vz, rd.vroll};
   const WheelsetDimensions& w = r.wheelset;

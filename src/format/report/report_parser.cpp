@@ -94,7 +94,7 @@ ValueKind classify(const std::vector<std::string>& labels) {
   if ((first == "XCP(TR)" && second == "YCP(TR)") || (first == "XCP(W)" && second == "YCP(W)"))
     return ValueKind::Reals;
   if (first == "CHI" && second == "DQ") return ValueKind::Reals;
-  if (first == "S_WS" && second == "Y_WS") return ValueKind::Reals;
+  if ((first == "S_WS" || first == "X_WS") && second == "Y_WS") return ValueKind::Reals;
   return ValueKind::None;
 }
 
@@ -252,7 +252,7 @@ Report parse_report(std::istream& in) {
       const ValueKind kind = classify(labels);
       if (kind != ValueKind::None) {
         // Module-1 totals over all patches belong to the case, wherever they are printed.
-        pending_case_level = labels[0] == "FX(TR)" || labels[0] == "S_WS";
+        pending_case_level = labels[0] == "FX(TR)" || labels[0] == "S_WS" || labels[0] == "X_WS";
         pending_labels = std::move(labels);
         pending = kind;
       }

@@ -38,8 +38,9 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
   const ControlDigits& d = r.digits;
   const std::size_t n = s.patches.size();
   line(os, "");
-  line(os, fmt::format(" WHEEL-RAIL CONTACT, {} WHEEL, {:2d} CONTACT {}",
-                       r.is_left() ? "LEFT" : "RIGHT", n, n == 1 ? "PATCH" : "PATCHES"));
+  line(os, fmt::format(" WHEEL-{} CONTACT, {} WHEEL, {:2d} CONTACT {}",
+                       r.is_roller() ? "ROLLER" : "RAIL", r.is_left() ? "LEFT" : "RIGHT", n,
+                       n == 1 ? "PATCH" : "PATCHES"));
   line(os, "");
   line(os, fmt::format(" CPBTNFS.  CONFIG {}, PVTIME {}, BOUND {:2d}, TANG {:3d}, NORM {:3d}, "
                        "FORCE {:2d}, STRESS {}",
@@ -69,18 +70,21 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
   }
   line(os, "");
   line(os, " WHEEL-SET POSITION AND VELOCITY");
-  line(os, "     S_WS        Y_WS        Z_WS        ROLL_WS     YAW_WS      PITCH_WS");
+  // A roller rig: the wheelset's position X_WS and the roller's angular velocity RPITCH.
+  line(os, std::string("     ") + (r.is_roller() ? "X_WS" : "S_WS") +
+               "        Y_WS        Z_WS        ROLL_WS     YAW_WS      PITCH_WS");
   const WheelsetMotion& m = r.motion;
   line(os, "  " + sig(m.s) + sig(m.y) + sig(s.z_ws_mm) + sig(m.roll) + sig(m.yaw) + sig(m.pitch));
   line(os, "");
-  line(os, "     VX_WS       VY_WS       VZ_WS       VROLL_WS    VYAW_WS     VPITCH_WS");
-  line(os, "  " + sig(m.vs) + sig(m.vy) + sig(m.vz) + sig(m.vroll) + sig(m.vyaw) +
-               fmt_sig(12, 8, 8, s.vpitch_rad_s));  // solved for F=1
+  line(os, std::string("     ") + (r.is_roller() ? "RPITCH " : "VX_WS  ") +
+               "     VY_WS       VZ_WS       VROLL_WS    VYAW_WS     VPITCH_WS");
+  line(os, "  " + sig(r.is_roller() ? m.rpitch : m.vs) + sig(m.vy) + sig(m.vz) + sig(m.vroll) +
+               sig(m.vyaw) + fmt_sig(12, 8, 8, s.vpitch_rad_s));  // solved for F=1
 }
 
-void write_totals(std::ostream& os, const WheelRailSolution& s) {
+void write_totals(std::ostream& os, const WheelRailRecord& r, const WheelRailSolution& s) {
   line(os, "");
-  line(os, " TOTAL FORCES ON RAIL");
+  line(os, r.is_roller() ? " TOTAL FORCES ON ROLLER" : " TOTAL FORCES ON RAIL");
   line(os, "     FX(TR)      FY(TR)      FZ(TR)      FX(WS)      FY(WS)      FZ(WS)");
   line(os, "  " + sig(s.force_tr.x) + sig(s.force_tr.y) + sig(s.force_tr.z) + sig(s.force_ws.x) +
                sig(s.force_ws.y) + sig(s.force_ws.z));
@@ -148,7 +152,7 @@ void write_wheelrail_case_report(std::ostream& os, const WheelRailRecord& record
   const ControlDigits& d = record.digits;
   if (d.r >= 2 || d.o <= 0) return;
   if (d.o >= 2) write_problem_echo(os, record, solution);
-  write_totals(os, solution);
+  write_totals(os, record, solution);
   int k = 0;
   for (const WheelRailPatch& w : solution.patches) write_patch(os, record, identity, w, ++k);
   if (solution.patches.empty()) {

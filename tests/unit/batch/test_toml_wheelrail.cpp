@@ -154,6 +154,42 @@ TEST(TomlWheelRail, S1002On54E1ExampleAndItsTwin) {
   EXPECT_NEAR(rolling.pen, pen, 1e-3 * pen);
 }
 
+TEST(TomlWheelRail, RollerRigExampleAndItsTwin) {
+  // examples/roller_rig.inp (C1 = 5) and its TOML twin solve to the same answers bit for bit.
+  // Case 1: the roller's surface passes at RPITCH·NOMRADR = 2000 mm/s, rolling forward (χ = 0).
+  // Case 2: the yawed wheelset touches the roller behind its top (x < 0). Case 3: a ring of the
+  // same surface speed conforms, its patch is longer and carries less pressure than case 1's.
+  const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
+  const auto from_inp = format::read_input_cases(repo_examples / "roller_rig.inp");
+  const auto from_toml = format::read_toml_input_file(repo_examples / "toml" / "roller_rig.toml");
+  ASSERT_EQ(from_inp.size(), 3u);
+  ASSERT_EQ(from_toml.size(), 3u);
+  WheelsetSolver inp_solver, toml_solver;
+  std::vector<WheelRailSolution> si;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const model::WheelRailProblem p =
+        format::to_wheelrail_problem(std::get<format::WheelRailRecord>(from_inp[k]));
+    ASSERT_TRUE(p.roller.enabled);
+    si.push_back(inp_solver.solve(p));
+    const WheelRailSolution st = toml_solver.solve(
+        format::to_wheelrail_problem(std::get<format::WheelRailRecord>(from_toml[k])));
+    ASSERT_TRUE(si[k].converged) << si[k].message;
+    ASSERT_EQ(si[k].patches.size(), 1u);
+    ASSERT_EQ(st.patches.size(), 1u);
+    EXPECT_EQ(st.force_tr.x, si[k].force_tr.x);
+    EXPECT_EQ(st.force_tr.y, si[k].force_tr.y);
+    EXPECT_EQ(st.force_tr.z, si[k].force_tr.z);
+    EXPECT_NEAR(si[k].force_tr.z, 1e4, 1e4 * 1e-5 * 1.01);
+    EXPECT_NEAR(si[k].patches[0].veloc_mm_s, 2000.0, 1.0);
+    EXPECT_EQ(si[k].patches[0].chi_rad, 0.0);
+  }
+  EXPECT_NEAR(si[0].patches[0].reference_tr.x, 0.0, 1e-6);
+  EXPECT_LT(si[1].patches[0].reference_tr.x, -1.0);
+  const Totals &outer = si[0].patches[0].solution.totals, &ring = si[2].patches[0].solution.totals;
+  EXPECT_GT(ring.contact_area, 1.2 * outer.contact_area);
+  EXPECT_LT(ring.pmax, 0.8 * outer.pmax);
+}
+
 TEST(TomlWheelRail, MasslessRailRoundTrip) {
   // examples/massless_rail.inp (F=3) -> TOML -> the same rail data and the same deflections.
   const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";

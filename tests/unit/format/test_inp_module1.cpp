@@ -195,6 +195,25 @@ TEST(InpModule1, RollerRigMasslessRailAndFlexibleWheelset) {
   EXPECT_DOUBLE_EQ(c.wheel_deviations.vpitch, 6.0);
 }
 
+TEST(InpModule1, InternalRollerHasANegativeRadiusAndZeroIsRefused) {
+  // NOMRADR < 0: an internal roller (a ring around the wheel); |NOMRADR| < 1 mm: no roller.
+  auto roller_case = [](const std::string& nomradr) {
+    return " 1 MODULE\n 5203100\n 0022033\n 0000321\n  999 100 30 1 1e-5\n  0.30 0.30\n"
+           "  0.28 0.28 82000. 82000.\n  0.2 0.2 1.0 90d 8.0 4.0\n  14.0 0 1435.0 " +
+           nomradr +
+           "\n  'profiles/rail_arc.txt' 0 1.0 0.0\n  0 0 0 0 0 0\n  1360.0 -70.0 460.0\n"
+           "  'profiles/wheel_cone.txt' 0 1.0 0.0\n  0 0 10000. 0 0 0\n  2.0 0 0 0 0 -4.3\n"
+           " 0 MODULE\n";
+  };
+  const auto cases = read(roller_case("-1500.0"));
+  ASSERT_EQ(cases.size(), 1u);
+  EXPECT_DOUBLE_EQ(wr(cases, 0).track.nomradr, -1500.0);
+  EXPECT_DOUBLE_EQ(wr(cases, 0).motion.rpitch, 2.0);
+  const auto [line, message] = input_error(roller_case("0.0"));
+  EXPECT_EQ(line, 9);
+  EXPECT_NE(message.find("NOMRADR = 0"), std::string::npos) << message;
+}
+
 TEST(InpModule1, FxWsReplacesVpitchWithF1) {
   const auto cases = read(first_case("1203110") + " 0 MODULE\n");
   EXPECT_DOUBLE_EQ(wr(cases, 0).motion.fx, -4.3);
