@@ -20,10 +20,10 @@ constexpr double kNoWheel = 1e30;
 /// (a fixed-point iteration would diverge for a roller smaller than the wheel).
 double roller_locus_x(const PlacedProfiles& prof, const WheelsetPose& pose, double y_ws,
                       const CurvePoint& w, double r, double x0, double x_limit) {
-  const Mat3& R = pose.rotation;
+  const Mat3& R = pose.wheel_rotation;
   const auto condition = [&](double x, bool& ok) {
     const double c = std::sqrt(std::max(r * r - x * x, 0.0));
-    const Vec3 pt = pose.centre + R * Vec3{x, y_ws, c};
+    const Vec3 pt = pose.wheel_centre + R * Vec3{x, y_ws, c};
     const RailSurfacePoint rs = prof.rail_surface_at(pt.x, pt.y);
     ok = rs.found;
     const Vec3 n = R * Vec3{x / r, -w.dz_dy, c / r};
@@ -51,7 +51,7 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
   const std::size_t n = g.gap.size();
   z_locus.assign(n, -kNoWheel);
   g.x_locus.assign(n, 0.0);
-  const Mat3& R = pose.rotation;
+  const Mat3& R = pose.wheel_rotation;
   const double r_nom = p.wheelset.nominal_radius_mm;
   const double y_off = prof.wheel_y_offset_mm(), r0 = prof.wheel_r0_mm();
   const ProfileCurve& wheel = prof.wheel();
@@ -68,7 +68,7 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
     x = std::clamp(x, -0.5 * r_nom, 0.5 * r_nom);
     if (prof.roller()) x = roller_locus_x(prof, pose, y_off + yp, w, r, x, 0.5 * r_nom);
     const Vec3 q{x, y_off + yp, std::sqrt(std::max(r * r - x * x, 0.0))};
-    Vec3 pt = pose.centre + R * q;
+    Vec3 pt = pose.wheel_centre + R * q;
     if (prof.wheel_surface() != nullptr) {
       // Out of round: search the circumference from the round wheel's locus angle.
       const LocusPoint lp = sliced_locus_point(prof, pose, yp, std::atan2(q.x, q.z));

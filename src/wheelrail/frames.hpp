@@ -42,6 +42,15 @@ struct Mat3 {
   }
 };
 
+/// The product a·b of two rotations.
+inline Mat3 product(const Mat3& a, const Mat3& b) {
+  Mat3 m;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      m.r[i][j] = a.r[i][0] * b.r[0][j] + a.r[i][1] * b.r[1][j] + a.r[i][2] * b.r[2][j];
+  return m;
+}
+
 /// R_x(roll) · R_z(yaw): the wheelset's orientation in the track (pitch is the wheel's own
 /// rotation about its axle and does not change the surface of a round wheel).
 inline Mat3 roll_yaw_rotation(double roll, double yaw) {

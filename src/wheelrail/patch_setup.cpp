@@ -144,6 +144,30 @@ void set_creepages(PatchKinematics& k, const ContactFrame& f, Vec3 v_P, Vec3 v_Q
   k.phi_per_mm = dot(omega_P - omega_Q, f.en) / k.veloc_mm_s;
 }
 
+/// Velocity v and angular velocity ω of the wheel's material point at Q [track]: the wheelset's
+/// motion, plus on a flexible wheelset the wheel's deviation rates about its marker m
+/// (wheelrail-advanced.md §5.1): v_Q = v_ws + ω_ws × r_Q + R·(v_w + ω_w × (q − m)), ω_Q = ω_ws
+/// + R·ω_w, q = Rᵀ·r_Q the point in wheelset coordinates.
+struct WheelPointMotion {
+  Vec3 v, omega;
+};
+WheelPointMotion wheel_point_motion(const model::WheelRailProblem& p, const WheelsetPose& pose,
+                                    const PlacedProfiles& prof, Vec3 Q) {
+  const model::WheelsetState& m = p.motion;
+  const Vec3 r_Q = Q - pose.centre;
+  WheelPointMotion w;
+  w.omega = pose.rotation * Vec3{m.vroll_rad_s, m.vpitch_rad_s, m.vyaw_rad_s};
+  w.v = Vec3{m.vs_mm_s, m.vy_mm_s, m.vz_mm_s} + cross(w.omega, r_Q);
+  const model::WheelDeviation& d = p.wheel_deviation;
+  if (d.rates()) {
+    const Vec3 omega_w{d.vroll_rad_s, d.vpitch_rad_s, d.vyaw_rad_s};
+    const Vec3 lever = pose.rotation.transposed_times(r_Q) - wheel_marker_ws(p, prof);
+    w.v = w.v + pose.rotation * (Vec3{d.vx_mm_s, d.vy_mm_s, d.vz_mm_s} + cross(omega_w, lever));
+    w.omega = w.omega + pose.rotation * omega_w;
+  }
+  return w;
+}
+
 /// Roller rig (spec/wheelrail-advanced.md §4.3): the contact stays where it is and both bodies
 /// turn through it — the roller about its axle (0, y, z_axle) at RPITCH (yawing at
 /// −r·RPITCH·CURV, r the contact's distance from the axle), the wheel about its own. V is the
@@ -151,7 +175,6 @@ void set_creepages(PatchKinematics& k, const ContactFrame& f, Vec3 v_P, Vec3 v_Q
 PatchKinematics roller_kinematics(const model::WheelRailProblem& p, const WheelsetPose& pose,
                                   const PlacedProfiles& prof, const ContactFrame& f,
                                   double pen_mm) {
-  const model::WheelsetState& m = p.motion;
   const model::RailState& rs = p.rail_state;
   const Vec3 P = f.origin;
   const Vec3 axle{0.0, 0.0, prof.roller_axle_z_mm()};
@@ -162,9 +185,8 @@ PatchKinematics roller_kinematics(const model::WheelRailProblem& p, const Wheels
   const Vec3 v_P = cross(Vec3{0.0, rpitch, yaw_rate}, P - axle) +
                    Vec3{0.0, rs.vy_mm_s, rs.vz_mm_s} +
                    cross(Vec3{rs.vroll_rad_s, 0.0, 0.0}, P - rail_origin);
-  const Vec3 r_Q = (P + pen_mm * f.en) - pose.centre;
-  const Vec3 omega_Q = pose.rotation * Vec3{m.vroll_rad_s, m.vpitch_rad_s, m.vyaw_rad_s};
-  const Vec3 v_Q = Vec3{m.vs_mm_s, m.vy_mm_s, m.vz_mm_s} + cross(omega_Q, r_Q);
+  const WheelPointMotion q = wheel_point_motion(p, pose, prof, P + pen_mm * f.en);
+  const Vec3 v_Q = q.v, omega_Q = q.omega;
   PatchKinematics k;
   const double vp = dot(v_P, f.ex), vq = dot(v_Q, f.ex);
   k.veloc_mm_s = 0.5 * std::abs(vp + vq);
@@ -193,8 +215,8 @@ PatchKinematics patch_kinematics(const model::WheelRailProblem& p, const Wheelse
   v_P.x += -yaw_rate_track * P.y;
   // Wheel point Q at distance PEN along the normal (the undeformed wheel surface).
   const Vec3 r_Q = (P + pen_mm * f.en) - pose.centre;
-  const Vec3 omega_Q = pose.rotation * Vec3{m.vroll_rad_s, m.vpitch_rad_s, m.vyaw_rad_s};
-  const Vec3 v_Q = Vec3{m.vs_mm_s, m.vy_mm_s, m.vz_mm_s} + cross(omega_Q, r_Q);
+  const WheelPointMotion q = wheel_point_motion(p, pose, prof, P + pen_mm * f.en);
+  const Vec3 v_Q = q.v, omega_Q = q.omega;
   const double v_roll = cross(pose.rotation * Vec3{0.0, m.vpitch_rad_s, 0.0}, r_Q).x;
   const double v_est = v_Q.x - v_P.x - v_roll;
 

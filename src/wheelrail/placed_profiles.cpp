@@ -127,8 +127,10 @@ void PlacedProfiles::place(const model::WheelRailProblem& p) {
     roller_axle_z_ = rail_z_ + p.roller.nominal_radius_mm;
     roller_sign_ = p.roller.nominal_radius_mm < 0.0 ? -1.0 : 1.0;
   }
-  if (wheel_surface_ && -p.motion.pitch_rad != wheel_theta_) {
-    wheel_theta_ = -p.motion.pitch_rad;
+  // The wheel's own pitch deviation DPITCHW turns its slices with the wheelset's pitch.
+  const double theta = -(p.motion.pitch_rad + p.wheel_deviation.dpitch_rad);
+  if (wheel_surface_ && theta != wheel_theta_) {
+    wheel_theta_ = theta;
     wheel_ = cross_section_curve(*wheel_surface_, wheel_profile_.smoothing, wheel_theta_);
   }
 }

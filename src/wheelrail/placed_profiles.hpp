@@ -38,8 +38,8 @@ class PlacedProfiles {
   const ProfileCurve& wheel() const noexcept { return wheel_; }
   /// The wheel surface of a sliced wheel (physics.md §13.9); nullptr for a plain profile.
   const SlicedWheelSurface* wheel_surface() const noexcept { return wheel_surface_.get(); }
-  /// Material angle θ of the wheel point straight below the axle: −PITCH_WS [rad]. A point at
-  /// angle φ = atan2(x, z) from the axle (wheelset frame) is the material angle θ + φ.
+  /// Material angle θ of the wheel point straight below the axle: −PITCH_WS − DPITCHW [rad]. A
+  /// point at angle φ = atan2(x, z) from the axle (wheelset frame) is the material angle θ + φ.
   double wheel_theta_rad() const noexcept { return wheel_theta_; }
   double rail_y_mm() const noexcept { return rail_y_; }
   double rail_z_mm() const noexcept { return rail_z_; }

@@ -20,7 +20,8 @@ LocusPoint sliced_locus_point(const PlacedProfiles& prof, const WheelsetPose& po
     const WheelSurfacePoint w = surface.at(prof.wheel_theta_rad() + phi, y_p);
     if (!w.found) found = false;
     const double r = r0 + w.z;
-    return pose.centre + pose.rotation * Vec3{r * std::sin(phi), y_ws, r * std::cos(phi)};
+    return pose.wheel_centre +
+           pose.wheel_rotation * Vec3{r * std::sin(phi), y_ws, r * std::cos(phi)};
   };
   // Scan the window for the deepest sample (a flat can make two local maxima: its edges), then
   // narrow the bracket around it by golden sections.

@@ -32,18 +32,38 @@ bool sliced_wheel_along(const PlacedProfiles& profiles, Vec3 q0, Vec3 dq, double
 
 }  // namespace
 
-WheelsetPose pose_of(const model::WheelRailProblem& p, double z_ws_mm) {
+Vec3 wheel_marker_ws(const model::WheelRailProblem& p, const PlacedProfiles& profiles) {
+  const model::WheelDeviation& d = p.wheel_deviation;
+  return {d.dx_mm, profiles.wheel_y_offset_mm() + d.dy_mm, profiles.wheel_r0_mm() + d.dz_mm};
+}
+
+WheelsetPose pose_of(const model::WheelRailProblem& p, const PlacedProfiles& profiles,
+                     double z_ws_mm) {
   WheelsetPose pose;
   pose.rotation = roll_yaw_rotation(p.motion.roll_rad, p.motion.yaw_rad);
   pose.centre = {0.0, p.motion.y_mm, z_ws_mm - p.wheelset.nominal_radius_mm};
+  pose.wheel_rotation = pose.rotation;
+  pose.wheel_centre = pose.centre;
+  const model::WheelDeviation& d = p.wheel_deviation;
+  if (d.dx_mm != 0.0 || d.dy_mm != 0.0 || d.dz_mm != 0.0 || d.droll_rad != 0.0 ||
+      d.dyaw_rad != 0.0) {
+    // The wheel turned by R_w about its marker m and moved with it: a point q of the rigid
+    // wheel's frame lies at m + R_w·(q − m0) with m0 the undeviated marker, i.e. in a frame of
+    // rotation R·R_w centred at centre + R·(m − R_w·m0).
+    const Mat3 rw = roll_yaw_rotation(d.droll_rad, d.dyaw_rad);
+    const Vec3 m0{0.0, profiles.wheel_y_offset_mm(), profiles.wheel_r0_mm()};
+    const Vec3 m = wheel_marker_ws(p, profiles);
+    pose.wheel_rotation = product(pose.rotation, rw);
+    pose.wheel_centre = pose.centre + pose.rotation * (m - rw * m0);
+  }
   return pose;
 }
 
 bool wheel_surface_along(const PlacedProfiles& profiles, const WheelsetPose& pose, Vec3 from,
                          Vec3 dir, double t0, double& t, CurveHint* hint) {
   // f(t) = ρ(t) − r(y_p(t)): distance from the axle minus the wheel radius at that section.
-  const Vec3 q0 = pose.rotation.transposed_times(from - pose.centre);
-  const Vec3 dq = pose.rotation.transposed_times(dir);
+  const Vec3 q0 = pose.wheel_rotation.transposed_times(from - pose.wheel_centre);
+  const Vec3 dq = pose.wheel_rotation.transposed_times(dir);
   if (profiles.wheel_surface() != nullptr) return sliced_wheel_along(profiles, q0, dq, t0, t);
   const double y_off = profiles.wheel_y_offset_mm(), r0 = profiles.wheel_r0_mm();
   CurveHint local;

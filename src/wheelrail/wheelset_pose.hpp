@@ -11,10 +11,20 @@ namespace rollcontact::wheelrail {
 struct WheelsetPose {
   Mat3 rotation;  ///< wheelset → track, R_x(roll)·R_z(yaw)
   Vec3 centre;    ///< axle centre in track coordinates: (0, Y_WS, Z_WS − NOMRADW)
+  /// The wheel's surface frame: the wheel is the body of revolution of its profile about this
+  /// frame's y-axis, profile y = frame y − wheel_y_offset. The wheelset's frame for a rigid
+  /// wheelset; moved and turned by the wheel's deviation on a flexible one (E = 4, 5).
+  Mat3 wheel_rotation;
+  Vec3 wheel_centre;
 };
 
-/// The pose for the problem's motion with the wheelset's vertical position `z_ws_mm`.
-WheelsetPose pose_of(const model::WheelRailProblem& problem, double z_ws_mm);
+/// The pose for the problem's motion with the wheelset's vertical position `z_ws_mm`; the
+/// profiles place the wheel on the wheelset (its marker, about which a deviation turns it).
+WheelsetPose pose_of(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
+                     double z_ws_mm);
+/// The wheel's marker (profile origin) in wheelset coordinates: (0, y_offset, r0) shifted by
+/// the wheel's deviation (DXWHL, DYWHL, DZWHL).
+Vec3 wheel_marker_ws(const model::WheelRailProblem& problem, const PlacedProfiles& profiles);
 
 /// Distance t along the unit direction `dir` from `from` (track coordinates) at which the line
 /// meets the wheel surface, starting the search at `t0`. nullopt-like: returns false when the

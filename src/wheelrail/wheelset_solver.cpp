@@ -71,7 +71,7 @@ struct WheelsetSolver::Impl {
       samples = wheelrail::sample_rail(p, prof);
       rail_key = key;
     }
-    wheelrail::sample_wheel(p, prof, wheelrail::pose_of(p, 0.0), samples);
+    wheelrail::sample_wheel(p, prof, wheelrail::pose_of(p, prof, 0.0), samples);
   }
 
   /// Everything at one wheelset height (after prepare()); `normal_only`: the patches' normal
@@ -155,9 +155,11 @@ WheelRailPatch describe_patch(const model::WheelRailProblem& p, const PlacedProf
   w.delta_rail_rad = d - a;
   const Vec3 q = pose.rotation.transposed_times(ref - pose.centre);
   w.reference_ws = to_public(q);
-  w.reference_wheel = {q.x, q.y - prof.wheel_y_offset_mm(), q.z - prof.wheel_r0_mm()};
+  // Wheel-profile coordinates: in the wheel's own frame (turned on a flexible wheelset).
+  const Vec3 qw = pose.wheel_rotation.transposed_times(ref - pose.wheel_centre);
+  w.reference_wheel = {qw.x, qw.y - prof.wheel_y_offset_mm(), qw.z - prof.wheel_r0_mm()};
   w.s_wheel_mm = prof.wheel().at_y(w.reference_wheel.y).s;
-  w.delta_wheel_rad = d - p.motion.roll_rad;
+  w.delta_wheel_rad = d - p.motion.roll_rad - p.wheel_deviation.droll_rad;
   w.xi = s.kinematics.xi;
   w.eta = s.kinematics.eta;
   w.phi_per_mm = s.kinematics.phi_per_mm;
@@ -173,8 +175,7 @@ WheelRailPatch describe_patch(const model::WheelRailProblem& p, const PlacedProf
   // Moments (physics.md §13.6): (r_ref − r_marker) × F + R_ref·(0, 0, MN), MN about the normal.
   const Vec3 mn = sol.totals.mz * Vec3{0.0, -std::sin(d), std::cos(d)};
   const Vec3 rail_marker{0.0, prof.rail_y_mm(), prof.rail_z_mm()};
-  const Vec3 wheel_marker =
-      pose.centre + pose.rotation * Vec3{0.0, prof.wheel_y_offset_mm(), prof.wheel_r0_mm()};
+  const Vec3 wheel_marker = pose.centre + pose.rotation * wheelrail::wheel_marker_ws(p, prof);
   w.moment_tr = to_public(cross(ref - rail_marker, f_tr) + mn);
   w.moment_ws = to_public(pose.rotation.transposed_times(cross(ref - wheel_marker, f_tr) + mn));
   const auto [xc, yc] = pressure_centre(sol);
@@ -188,10 +189,11 @@ WheelRailPatch describe_patch(const model::WheelRailProblem& p, const PlacedProf
 void describe_markers(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                       const WheelsetPose& pose, WheelRailSolution& out) {
   out.rail_marker_tr = {{0.0, prof.rail_y_mm(), prof.rail_z_mm()}, prof.rail_roll_rad(), 0.0};
-  const Vec3 w = Vec3{0.0, prof.wheel_y_offset_mm(), prof.wheel_r0_mm()};
-  out.wheel_marker_ws = {to_public(w), 0.0, 0.0};
-  out.wheel_marker_tr = {to_public(pose.centre + pose.rotation * w), p.motion.roll_rad,
-                         p.motion.yaw_rad};
+  const Vec3 w = wheelrail::wheel_marker_ws(p, prof);
+  const model::WheelDeviation& d = p.wheel_deviation;
+  out.wheel_marker_ws = {to_public(w), d.droll_rad, d.dyaw_rad};
+  out.wheel_marker_tr = {to_public(pose.centre + pose.rotation * w),
+                         p.motion.roll_rad + d.droll_rad, p.motion.yaw_rad + d.dyaw_rad};
 }
 
 /// A left wheel is computed as a right one; its lateral components change sign.
@@ -263,7 +265,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   };
   auto start = Clock::now();
   const PlacedProfiles& prof = *profiles;
-  const WheelsetPose pose = wheelrail::pose_of(p, z_ws);
+  const WheelsetPose pose = wheelrail::pose_of(p, prof, z_ws);
   const SearchResult search = wheelrail::search_contact(p, prof, samples, z_ws);
   if (check_ends && !search.patches.empty() && search.minimum_at_profile_end)
     throw GeometryError(
@@ -343,6 +345,14 @@ model::WheelRailProblem as_right_side(model::WheelRailProblem p) {
   m.vy_mm_s = -m.vy_mm_s;
   m.vroll_rad_s = -m.vroll_rad_s;
   m.vyaw_rad_s = -m.vyaw_rad_s;
+  // The wheel's deviations are signed like the rail's (positive towards +y of the track).
+  model::WheelDeviation& w = p.wheel_deviation;
+  w.dy_mm = -w.dy_mm;
+  w.droll_rad = -w.droll_rad;
+  w.dyaw_rad = -w.dyaw_rad;
+  w.vy_mm_s = -w.vy_mm_s;
+  w.vroll_rad_s = -w.vroll_rad_s;
+  w.vyaw_rad_s = -w.vyaw_rad_s;
   model::RailState& r = p.rail_state;
   r.dy_mm = -r.dy_mm;
   r.droll_rad = -r.droll_rad;

@@ -110,6 +110,28 @@ struct WheelsetState {
   double fx_ws_N = 0.0;
 };
 
+/// A flexible wheelset (CONTACT's E = 4, 5; spec/wheelrail-advanced.md §5.1): the wheel's
+/// deviation from its place on the rigid wheelset, in wheelset coordinates, and its rates. The
+/// wheel turns by DROLLW about x and DYAWW about z around its profile origin (the marker, at
+/// the tape circle's lowest point) and shifts by (DXWHL, DYWHL, DZWHL); DPITCHW turns an
+/// out-of-round wheel's slices only. Lateral values are signed as the rail deviations: positive
+/// towards +y of the track for either wheel (a left wheel's are mirrored with its other inputs).
+/// A static deviation changes the geometry only; creepage comes from the rates.
+struct WheelDeviation {
+  double dx_mm = 0.0, dy_mm = 0.0, dz_mm = 0.0;
+  double droll_rad = 0.0, dyaw_rad = 0.0, dpitch_rad = 0.0;
+  double vx_mm_s = 0.0, vy_mm_s = 0.0, vz_mm_s = 0.0;
+  double vroll_rad_s = 0.0, vyaw_rad_s = 0.0, vpitch_rad_s = 0.0;
+  bool any() const noexcept {
+    return dx_mm != 0.0 || dy_mm != 0.0 || dz_mm != 0.0 || droll_rad != 0.0 || dyaw_rad != 0.0 ||
+           dpitch_rad != 0.0 || rates();
+  }
+  bool rates() const noexcept {
+    return vx_mm_s != 0.0 || vy_mm_s != 0.0 || vz_mm_s != 0.0 || vroll_rad_s != 0.0 ||
+           vyaw_rad_s != 0.0 || vpitch_rad_s != 0.0;
+  }
+};
+
 enum class VerticalLoading { Position, Force };
 
 /// What fixes the wheelset's rolling: its pitch velocity VPITCH (F=0), or the longitudinal
@@ -154,6 +176,7 @@ struct WheelRailProblem {
   RailState rail_state;
   WheelsetGeometry wheelset;
   WheelsetState motion;
+  WheelDeviation wheel_deviation;  ///< E = 4, 5; all zero: a rigid wheelset
   VerticalLoading vertical = VerticalLoading::Force;
   LongitudinalLoading longitudinal = LongitudinalLoading::PitchVelocity;
   MasslessRail massless_rail;  ///< F=3; disabled: a rigid rail (δy = δz = 0)

@@ -93,7 +93,6 @@ void check_supported(const WheelRailRecord& r) {
     not_supported(
         "variable wheel profiles (wheel slices files; not yet validated: contact location on "
         "the flat)");
-  if (d.e == 4 || d.e == 5) not_supported(fmt::format("flexible wheelsets E={}", d.e));
   if (r.rail.smooth > 0 && r.rail.ismooth == 2) not_supported("ISMOOTH=2 (rail profile)");
   if (r.wheel.smooth > 0 && r.wheel.ismooth == 2) not_supported("ISMOOTH=2 (wheel profile)");
   if (d.gapwgt != 0) not_supported(fmt::format("GAPWGT={}", d.gapwgt));
@@ -124,6 +123,9 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   const WheelsetMotion& m = r.motion;
   p.motion = {m.s,  m.y,  m.z,  m.fz,    m.roll, m.yaw,   m.pitch,
               m.vs, m.vy, m.vz, m.vroll, m.vyaw, m.vpitch};
+  const WheelDeviations& wd = r.wheel_deviations;
+  p.wheel_deviation = {wd.dx, wd.dy, wd.dz, wd.droll, wd.dyaw, wd.dpitch,
+                       wd.vx, wd.vy, wd.vz, wd.vroll, wd.vyaw, wd.vpitch};
   p.vertical = r.digits.n == 1 ? model::VerticalLoading::Force : model::VerticalLoading::Position;
   if (r.digits.f == 1) {
     p.longitudinal = model::LongitudinalLoading::Force;

@@ -34,6 +34,22 @@ void write_trace(std::ostream& os, const WheelRailSolution& s) {
                          fmt_sig(12, 4, 4, t.dfz_dz_N_per_mm)));
 }
 
+/// A flexible wheelset's deviations and rates (spec/wheelrail-advanced.md §5.1), when any is set.
+void write_wheel_deviations(std::ostream& os, const WheelDeviations& d) {
+  const double values[] = {d.dx, d.dy, d.dz, d.droll, d.dyaw, d.dpitch,
+                           d.vx, d.vy, d.vz, d.vroll, d.vyaw, d.vpitch};
+  bool flexible = false;
+  for (const double v : values) flexible = flexible || std::abs(v) > 1e-10;
+  if (!flexible) return;
+  line(os, "");
+  line(os, " FLEXIBLE WHEEL-SET DEVIATIONS");
+  line(os, "     DXWHL       DYWHL       DZWHL       DROLLW      DYAWW       DPITCHW");
+  line(os, "  " + sig(d.dx) + sig(d.dy) + sig(d.dz) + sig(d.droll) + sig(d.dyaw) + sig(d.dpitch));
+  line(os, "");
+  line(os, "     VXWHL       VYWHL       VZWHL       VROLLW      VYAWW       VPITCHW");
+  line(os, "  " + sig(d.vx) + sig(d.vy) + sig(d.vz) + sig(d.vroll) + sig(d.vyaw) + sig(d.vpitch));
+}
+
 void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelRailSolution& s) {
   const ControlDigits& d = r.digits;
   const std::size_t n = s.patches.size();
@@ -80,6 +96,7 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
                "     VY_WS       VZ_WS       VROLL_WS    VYAW_WS     VPITCH_WS");
   line(os, "  " + sig(r.is_roller() ? m.rpitch : m.vs) + sig(m.vy) + sig(m.vz) + sig(m.vroll) +
                sig(m.vyaw) + fmt_sig(12, 8, 8, s.vpitch_rad_s));  // solved for F=1
+  write_wheel_deviations(os, r.wheel_deviations);
 }
 
 void write_totals(std::ostream& os, const WheelRailRecord& r, const WheelRailSolution& s) {

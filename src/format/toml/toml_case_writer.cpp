@@ -494,11 +494,10 @@ class WheelRailWriter {
 
   void write() {
     const ControlDigits& d = r_.digits;
-    if (r_.variable_friction.v != 0 || d.f == 2 || d.e == 4 || d.e == 5 || r_.rail.sliced ||
-        r_.wheel.sliced)
+    if (r_.variable_friction.v != 0 || d.f == 2 || r_.rail.sliced || r_.wheel.sliced)
       throw Error(
-          fmt::format("case {}: variable friction, prescribed MY_WS (F=2), flexible "
-                      "wheelsets and variable profiles have no TOML case-file equivalent yet",
+          fmt::format("case {}: variable friction, prescribed MY_WS (F=2) and variable profiles "
+                      "have no TOML case-file equivalent yet",
                       r_.case_number));
     out_ += "\n[[case]]\n";
     if (!r_.source.file.empty())
@@ -616,6 +615,25 @@ class WheelRailWriter {
     line("yaw_rad_per_s", real(m.vyaw));
     line("pitch_rad_per_s", real(m.vpitch));
     if (m.rpitch != 0.0) line("roller_pitch_rad_per_s", real(m.rpitch));
+    // A flexible wheelset: its deviations (read with E = 4, 5 and kept by later cases).
+    const WheelDeviations& d = r_.wheel_deviations;
+    if (d.dx != 0.0 || d.dy != 0.0 || d.dz != 0.0 || d.droll != 0.0 || d.dyaw != 0.0 ||
+        d.dpitch != 0.0 || d.vx != 0.0 || d.vy != 0.0 || d.vz != 0.0 || d.vroll != 0.0 ||
+        d.vyaw != 0.0 || d.vpitch != 0.0) {
+      table("case.wheel_rail.wheel_deviation");
+      line("dx_mm", real(d.dx));
+      line("dy_mm", real(d.dy));
+      line("dz_mm", real(d.dz));
+      line("roll_rad", real(d.droll));
+      line("yaw_rad", real(d.dyaw));
+      line("pitch_rad", real(d.dpitch));
+      line("vx_mm_per_s", real(d.vx));
+      line("vy_mm_per_s", real(d.vy));
+      line("vz_mm_per_s", real(d.vz));
+      line("vroll_rad_per_s", real(d.vroll));
+      line("vyaw_rad_per_s", real(d.vyaw));
+      line("vpitch_rad_per_s", real(d.vpitch));
+    }
   }
 
   std::string& out_;

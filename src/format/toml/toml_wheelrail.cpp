@@ -187,6 +187,28 @@ void read_motion(Table& w, WheelRailRecord& r) {
   v.finish();
 }
 
+/// A flexible wheelset (E=5, spec/wheelrail-advanced.md §5.1): the wheel's deviations from its
+/// place on the wheelset and their rates, in wheelset coordinates.
+void read_wheel_deviation(Table& w, WheelRailRecord& r) {
+  auto t = w.opt_table("wheel_deviation");
+  if (!t) return;
+  WheelDeviations& d = r.wheel_deviations;
+  d.dx = t->real_or("dx_mm", 0.0);
+  d.dy = t->real_or("dy_mm", 0.0);
+  d.dz = t->real_or("dz_mm", 0.0);
+  d.droll = t->real_or("roll_rad", 0.0);
+  d.dyaw = t->real_or("yaw_rad", 0.0);
+  d.dpitch = t->real_or("pitch_rad", 0.0);
+  d.vx = t->real_or("vx_mm_per_s", 0.0);
+  d.vy = t->real_or("vy_mm_per_s", 0.0);
+  d.vz = t->real_or("vz_mm_per_s", 0.0);
+  d.vroll = t->real_or("vroll_rad_per_s", 0.0);
+  d.vyaw = t->real_or("vyaw_rad_per_s", 0.0);
+  d.vpitch = t->real_or("vpitch_rad_per_s", 0.0);
+  t->finish();
+  r.digits.e = 5;  // the wheelset and wheel profile are given with it
+}
+
 /// The massless rail (F=3, spec/wheelrail-advanced.md §2): its springs and loads.
 void read_massless_rail(Table& w, WheelRailRecord& r) {
   auto t = w.opt_table("massless_rail");
@@ -266,6 +288,7 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   read_wheelset(w, r);
   r.wheel = read_profile(w, "wheel", true, ctx, r.source.warnings);
   read_motion(w, r);
+  read_wheel_deviation(w, r);
   read_massless_rail(w, r);
   w.finish();
   c.finish();

@@ -190,6 +190,70 @@ TEST(TomlWheelRail, RollerRigExampleAndItsTwin) {
   EXPECT_LT(ring.pmax, 0.8 * outer.pmax);
 }
 
+TEST(TomlWheelRail, FlexibleWheelsetExampleAndItsTwin) {
+  // examples/flexible_wheelset.inp (E = 4) and its TOML twin: the same answers bit for bit.
+  // Case 2's wheel, yawed back by the wheelset's 7.2 mrad on it, touches at its lowest point
+  // (x = 0 in wheel-profile coordinates); case 3's lateral rate VYWHL = 20 mm/s lowers η·V by
+  // its component along the patch, 20·cos δ, against case 2 (the yaw rate VYAWW about the
+  // marker moves the contact point along x only: its lever is lateral, x = 0).
+  const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
+  const auto from_inp = format::read_input_cases(repo_examples / "flexible_wheelset.inp");
+  const auto from_toml =
+      format::read_toml_input_file(repo_examples / "toml" / "flexible_wheelset.toml");
+  ASSERT_EQ(from_inp.size(), 3u);
+  ASSERT_EQ(from_toml.size(), 3u);
+  WheelsetSolver inp_solver, toml_solver;
+  std::vector<WheelRailSolution> si;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto& wi = std::get<format::WheelRailRecord>(from_inp[k]);
+    const auto& wt = std::get<format::WheelRailRecord>(from_toml[k]);
+    EXPECT_EQ(wt.wheel_deviations.dyaw, wi.wheel_deviations.dyaw);
+    EXPECT_EQ(wt.wheel_deviations.vy, wi.wheel_deviations.vy);
+    si.push_back(inp_solver.solve(format::to_wheelrail_problem(wi)));
+    const WheelRailSolution st = toml_solver.solve(format::to_wheelrail_problem(wt));
+    ASSERT_TRUE(si[k].converged) << si[k].message;
+    ASSERT_EQ(si[k].patches.size(), 1u);
+    ASSERT_EQ(st.patches.size(), 1u);
+    EXPECT_EQ(st.force_tr.x, si[k].force_tr.x);
+    EXPECT_EQ(st.force_tr.y, si[k].force_tr.y);
+    EXPECT_EQ(st.force_tr.z, si[k].force_tr.z);
+  }
+  EXPECT_GT(std::abs(si[0].patches[0].reference_wheel.x), 0.1);
+  EXPECT_NEAR(si[1].patches[0].reference_wheel.x, 0.0, 1e-3);
+  const WheelRailPatch &still = si[1].patches[0], &moving = si[2].patches[0];
+  EXPECT_NEAR(moving.eta * moving.veloc_mm_s - still.eta * still.veloc_mm_s,
+              -20.0 * std::cos(moving.contact_angle_rad), 1e-3);
+}
+
+TEST(TomlWheelRail, ReportsNameTheRollerAndTheFlexibleWheel) {
+  // The .out report says WHEEL-ROLLER and TOTAL FORCES ON ROLLER on a roller rig, X_WS and
+  // RPITCH in the wheelset block, and prints the deviations of a flexible wheel.
+  const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
+  const fs::path out = fs::temp_directory_path() / "rollcontact_roller_report";
+  fs::remove_all(out);
+  fs::create_directories(out);
+  RunOptions options;
+  options.output_dir = out;
+  auto report_of = [&](const char* name) {
+    const RunResult r = run_input_file(repo_examples / name, options);
+    EXPECT_EQ(r.failed, 0) << name;
+    std::ifstream in(r.report_path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  const std::string roller = report_of("roller_rig.inp");
+  EXPECT_NE(roller.find(" WHEEL-ROLLER CONTACT, RIGHT WHEEL"), std::string::npos);
+  EXPECT_NE(roller.find(" TOTAL FORCES ON ROLLER"), std::string::npos);
+  EXPECT_NE(roller.find("     X_WS        Y_WS"), std::string::npos);
+  EXPECT_NE(roller.find("     RPITCH      VY_WS"), std::string::npos);
+  EXPECT_EQ(roller.find("FORCES ON RAIL"), std::string::npos);
+  const std::string flexible = report_of("flexible_wheelset.inp");
+  EXPECT_NE(flexible.find(" FLEXIBLE WHEEL-SET DEVIATIONS"), std::string::npos);
+  EXPECT_NE(flexible.find("     VXWHL       VYWHL"), std::string::npos);
+  fs::remove_all(out);
+}
+
 TEST(TomlWheelRail, MasslessRailRoundTrip) {
   // examples/massless_rail.inp (F=3) -> TOML -> the same rail data and the same deflections.
   const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
