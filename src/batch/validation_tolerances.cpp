@@ -36,6 +36,8 @@
 // (`patch k/NAME`) look for `patch/NAME` first.
 //
 // MAX(T1,T2) (H >= 1): 1 % relative (validation.md §3); a maximum of single elements like PMAX.
+// Subsurface extremes (`SUBS b/SIGVM` …, S >= 1): 5e-3 relative + 0.001 N/mm², like PMAX; their
+// locations are not compared (near-equal maxima in neighbouring points).
 //
 // Not compared: FN/G, FX/FSTAT/FN, FY/FSTAT/FN (derived from the forces above), ELEN, FRIC,
 // NPOT (input), NPLAST, INORM, ITANG (iteration counts differ by design).
@@ -48,6 +50,11 @@
 namespace rollcontact::batch {
 
 const Tolerance* ToleranceTable::find(std::string_view key) const {
+  // `[patch k/]SUBS b/NAME`: a subsurface extreme of block b, `SUBS/NAME`.
+  if (const auto subs = key.find("SUBS "); subs != std::string_view::npos) {
+    const auto it = by_quantity.find("SUBS/" + std::string(key.substr(key.rfind('/') + 1)));
+    return it == by_quantity.end() ? nullptr : &it->second;
+  }
   // `patch k/NAME`: module-1 patch quantities, `patch/NAME` where module 1 differs from module 3.
   if (const auto slash = key.rfind('/');
       slash != std::string_view::npos && key.substr(0, 6) == "patch ") {
@@ -79,6 +86,12 @@ ToleranceTable default_tolerances() {
     t.by_quantity.emplace(name, solved_creepage);
   for (const char* name : {"NCON", "NADH", "NSLIP"}) t.by_quantity.emplace(name, element_count);
   t.by_quantity.emplace("MAX(T1,T2)", Tolerance{.relative = 1e-2});
+  // Subsurface extremes: maxima over points like PMAX, of sums over every loaded element, so
+  // 5e-3 relative; 0.001 N/mm² for an extreme near zero (the printed resolution).
+  for (const char* name :
+       {"SIGHYD", "SIGVM", "SIGTR", "SIGMA1", "SIGMA3", "SIGXX", "SIGYY", "SIGZZ"})
+    t.by_quantity.emplace(std::string("SUBS/") + name,
+                          Tolerance{.relative = 5e-3, .absolute = 1e-3});
 
   // Module 1.
   const Tolerance wheelrail_force{.relative = 5e-3, .per_fn = 2e-4};

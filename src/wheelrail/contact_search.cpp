@@ -239,6 +239,7 @@ void turn_neighbour_angles(std::vector<ContactRegion>& patches,
     const double mean = (a.weight * a.delta_rad + b.weight * b.delta_rad) / (a.weight + b.weight);
     turned[k] += f * (mean - a.delta_rad);
     turned[k + 1] += f * (mean - b.delta_rad);
+    a.angle_turned = b.angle_turned = true;
   }
   for (std::size_t k = 0; k < patches.size(); ++k) patches[k].delta_rad = turned[k];
 }

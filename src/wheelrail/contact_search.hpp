@@ -28,14 +28,16 @@ struct RegionExtent {
 
 /// One contact region: where the wheel and the rail interpenetrate, or a combination of them.
 struct ContactRegion {
-  std::size_t first = 0, last = 0;      ///< gap samples, one guard sample each side included
-  Vec3 reference;                       ///< weighted reference point on the rail [mm]
-  double delta_rad = 0.0;               ///< contact angle: weighted rail inclination
-  double x_min = 0.0, x_max = 0.0;      ///< longitudinal extent of the interpenetration [mm]
-  double y_min = 0.0, y_max = 0.0;      ///< lateral extent (samples first..last) [mm]
-  double z_min = 0.0, z_max = 0.0;      ///< vertical extent of the rail surface there [mm]
-  double min_gap = 0.0;                 ///< deepest interpenetration (negative) [mm]
-  int regions = 1;                      ///< interpenetration regions combined into this one
+  std::size_t first = 0, last = 0;  ///< gap samples, one guard sample each side included
+  Vec3 reference;                   ///< weighted reference point on the rail [mm]
+  double delta_rad = 0.0;           ///< contact angle: weighted rail inclination
+  double x_min = 0.0, x_max = 0.0;  ///< longitudinal extent of the interpenetration [mm]
+  double y_min = 0.0, y_max = 0.0;  ///< lateral extent (samples first..last) [mm]
+  double z_min = 0.0, z_max = 0.0;  ///< vertical extent of the rail surface there [mm]
+  double min_gap = 0.0;             ///< deepest interpenetration (negative) [mm]
+  int regions = 1;                  ///< interpenetration regions combined into this one
+  /// Its reference angle was turned towards a neighbour between D_SEP and D_TURN.
+  bool angle_turned = false;
   double weight = 0.0;                  ///< Σ w of the samples
   double wx = 0.0, wy = 0.0, wd = 0.0;  ///< Σ w·x_lc, Σ w·y, Σ w·α (for combination)
   /// Regions combined at a distance D_COMB < d ≤ D_SEP, by lateral position: their influence on

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "geometry/hertz.hpp"
+#include "post/subsurface.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/wheelrail.hpp"
 #include "simplified/flexibility.hpp"
@@ -102,6 +103,10 @@ struct WheelsetSolver::Impl {
   };
   RailKey rail_key;
   unsigned long profiles_generation = 0;  ///< counts the profile curves made
+
+  /// The last complete solve had patches whose angles the D_TURN rule turned (validated_only
+  /// refuses its result: docs/decisions.md, "Variable friction (V=1, 2) and the D_TURN rule").
+  bool last_solve_turned = false;
 
   /// Wall time of the current case [s] (see WheelRailSolution).
   double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
@@ -273,6 +278,10 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
         "on the rail (check Y_WS, the gauge and the profiles' orientation)");
   WheelRailSolution out;
   out.z_ws_mm = z_ws;
+  if (!normal_only) {
+    last_solve_turned = false;
+    for (const ContactRegion& r : search.patches) last_solve_turned |= r.angle_turned;
+  }
   Vec3 total_tr{}, total_ws{}, moment_tr{}, moment_ws{};
   describe_markers(p, prof, pose, out);
   for (std::size_t k = 0; k < search.patches.size(); ++k) {
@@ -293,6 +302,9 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
     link.normal_from_previous = link.continue_previous;
     link.becomes_previous = !normal_only;
     if (normal_only) setup.problem.tangential.kind = model::TangentialKind::None;
+    // Subsurface stresses of the final patches only (WheelsetSolver::solve), not of every
+    // iterate of the force iterations: they cost more than the contact problem itself.
+    setup.problem.subsurface.clear();
     geometry_seconds += since(start);
     start = Clock::now();
     const model::PressureModel pressure = setup.problem.normal.pressure;
@@ -671,6 +683,7 @@ void check_roller(const model::WheelRailProblem& p) {
 WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) {
   check_roller(problem);
   impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
+  impl_->last_solve_turned = false;
   if (problem.vertical == model::VerticalLoading::Force && !(problem.motion.fz_N >= 1e-9)) {
     // CONTACT's early return (spec/wheelrail-advanced.md §6.3): a wheel without load is not in
     // contact; z_ws = 0 and no forces, nothing solved. An MBS code lifting a wheel gets this.
@@ -684,8 +697,20 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
                                  ? impl_->solve_pitch_velocity(problem)
                              : problem.massless_rail.enabled ? impl_->solve_massless_rail(problem)
                                                              : impl_->solve_placed(problem, {});
+  if (problem.validated_only && impl_->last_solve_turned)
+    throw NotSupportedError(
+        "not supported yet: module 1 patches between D_SEP and D_TURN (their reference angles "
+        "turned towards each other; not yet validated: mbench_a22_varfric case 3 differs)");
   if (problem.longitudinal != model::LongitudinalLoading::Force)
     result.vpitch_rad_s = problem.motion.vpitch_rad_s;
+  if (!problem.patch.subsurface.empty()) {
+    const auto start = std::chrono::steady_clock::now();
+    for (WheelRailPatch& w : result.patches)
+      w.solution.subsurface =
+          post::compute_subsurface(problem.patch.subsurface, problem.patch.bodies, w.solution);
+    impl_->patch_solve_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
   result.geometry_seconds = impl_->geometry_seconds;
   result.patch_solve_seconds = impl_->patch_solve_seconds;
   return result;

@@ -78,11 +78,10 @@ void check_supported(const WheelRailRecord& r) {
   if (d.f == 2) not_supported("prescribed wheelset moment F=2 (experimental in CONTACT)");
   // KPEC/ANALYN (B=5, 6) reproduce mbench_a22_kpec cases 2-5; the wheel/rail solver refuses
   // the patches where they do not (cases 1 and 6; model::WheelRailProblem::validated_only).
-  // The wheel/rail solver interpolates V=1, 2 friction per patch (model::FrictionVariation); the
-  // .inp route waits until mbench_a22_varfric case 3, whose two patches lie between D_SEP and
-  // D_TURN, agrees (docs/decisions.md): cases 1, 2, 4 and 6 already give CONTACT's digits.
-  if (r.variable_friction.v != 0)
-    not_supported(fmt::format("variable friction V={} (not yet validated)", r.variable_friction.v));
+  // V=1, 2: the wheel/rail solver interpolates the friction per patch (model::FrictionVariation);
+  // mbench_a22_varfric cases 1, 2, 4 and 6 give CONTACT's digits. Case 3, whose two patches lie
+  // between D_SEP and D_TURN, is refused by the solver (validated_only) until the turning rule
+  // agrees (docs/decisions.md).
   if (r.rail.sliced) not_supported("variable rail profiles (rail slices files)");
   // The wheel/rail solver takes sliced wheels (model::WheelRailProfile::slices); on `wheelflat`
   // it gives CONTACT's z_ws in every case and its forces within 0.5 % away from the flat, but

@@ -150,6 +150,32 @@ std::optional<int> patch_header(std::string_view line) {
   return k;
 }
 
+/// ` SUBSURFACE STRESSES BLOCK  2:` → 2.
+std::optional<int> subsurface_block_header(std::string_view line) {
+  constexpr std::string_view tag = " SUBSURFACE STRESSES BLOCK";
+  if (line.substr(0, tag.size()) != tag) return std::nullopt;
+  std::string_view rest = line.substr(tag.size());
+  while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+  int k = 0;
+  const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), k);
+  if (ec != std::errc() || end == rest.data()) return std::nullopt;
+  return k;
+}
+
+/// ` MAX     SIGVM =   210.509 AT (X,Y,Z) = (...)` → {"SIGVM", 210.509}: one extreme of a
+/// subsurface block (the location is not kept: near-equal maxima may sit in other elements).
+std::optional<std::pair<std::string, double>> subsurface_extreme(std::string_view line) {
+  const auto at = line.find(" AT (X,Y,Z)");
+  const auto eq = line.find(" =");
+  if (at == std::string_view::npos || eq == std::string_view::npos || eq > at) return std::nullopt;
+  const auto words = split_blanks(line.substr(0, eq));
+  if (words.size() != 2 || (words[0] != "MAX" && words[0] != "MIN" && words[0] != "ABSMAX"))
+    return std::nullopt;
+  const auto value = parse_report_real(split_blanks(line.substr(eq + 2, at - eq - 2)).front());
+  if (!value) return std::nullopt;
+  return std::pair{std::string(words[1]), *value};
+}
+
 }  // namespace
 
 std::optional<double> parse_report_real(std::string_view token) {
@@ -189,7 +215,8 @@ std::optional<double> parse_report_real(std::string_view token) {
 Report parse_report(std::istream& in) {
   Report report;
   ReportCase* current = nullptr;
-  std::string prefix;  // `patch k/` inside a module-1 patch block
+  std::string prefix;             // `patch k/` inside a module-1 patch block
+  std::string subsurface_prefix;  // `SUBS k/` after a subsurface block's header
   std::vector<std::string> pending_labels;
   ValueKind pending = ValueKind::None;
   bool pending_case_level = false;
@@ -206,6 +233,7 @@ Report parse_report(std::istream& in) {
       current = &report.cases.back();
       current->number = *number;
       prefix.clear();
+      subsurface_prefix.clear();
       pending = ValueKind::None;
       in_error = false;
       continue;
@@ -245,7 +273,18 @@ Report parse_report(std::istream& in) {
 
     if (const auto k = patch_header(line)) {
       prefix = "patch " + std::to_string(*k) + "/";
+      subsurface_prefix.clear();
       continue;
+    }
+    if (const auto b = subsurface_block_header(line)) {
+      subsurface_prefix = "SUBS " + std::to_string(*b) + "/";
+      continue;
+    }
+    if (!subsurface_prefix.empty()) {
+      if (const auto e = subsurface_extreme(line)) {
+        current->values[prefix + subsurface_prefix + e->first] = e->second;
+        continue;
+      }
     }
     if (starts_with_blank(line)) {
       auto labels = split_labels(line);

@@ -23,6 +23,8 @@ namespace rollcontact::format {
 ///  * module 1, per case: `FX(TR) FY(TR) FZ(TR) FX(WS) FY(WS) FZ(WS)`, `S_WS Y_WS Z_WS …`;
 ///    per patch: `XCP(TR) YCP(TR) ZCP(TR) DELTCP(TR) YCP(R) ZCP(R)`, `XCP(W) YCP(W) ZCP(W)`,
 ///    `CHI DQ VELOC CKSI CETA CPHI`.
+///  * subsurface stresses: the extremes of block b as `SUBS b/SIGHYD`, `SIGVM`, `SIGTR`,
+///    `SIGMA1`, `SIGMA3`, `SIGXX`, `SIGYY`, `SIGZZ` (their locations are not kept).
 /// Module-1 quantities of contact patch k carry the prefix `patch k/` (`patch 1/FN`); module 3
 /// has one implicit patch and no prefix. A field printed as asterisks (Fortran overflow) is NaN.
 struct ReportCase {

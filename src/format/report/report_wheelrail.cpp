@@ -11,6 +11,7 @@
 
 #include "format/report/number_format.hpp"
 #include "format/report/report_internal.hpp"
+#include "format/report/report_subsurface.hpp"
 #include "format/report/report_values.hpp"
 #include "format/report/report_writer.hpp"
 
@@ -153,6 +154,12 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
     line(os, "");
     line(os, " FORM OF THE CONTACT, ADHESION AND SLIP-AREA`S:");
     write_element_division(os, w.solution, d.t, w.chi_rad);
+  }
+  // S ≥ 1: the subsurface stress summaries of the patch, in its own coordinates.
+  if (d.s >= 1) {
+    CaseRecord with_points = identity;
+    with_points.subsurface = r.subsurface;
+    report::write_subsurface_summaries(os, with_points, w.solution);
   }
 }
 

@@ -177,6 +177,33 @@ TEST(ReportParser, ModulePatchesArePrefixed) {
   EXPECT_FALSE(r.cases[0].value("FN"));
 }
 
+TEST(ReportParser, SubsurfaceExtremesPerBlockAndPatch) {
+  // mbench_a22_varfric.ref_out case 1 (module 1, patch 1) and a module-3 block 2: the extremes
+  // by name, their locations dropped; lines of other blocks are not taken for them.
+  const Report r = parse_text(R"(
+ Case     1
+ ----- DATA FOR CONTACT PATCH  1 -----
+ SUBSURFACE STRESSES BLOCK  1:
+ 
+ ABSMAX SIGHYD =  -295.685 AT (X,Y,Z) = (   0.000,   2.000,   0.000)
+ MAX     SIGVM =   210.509 AT (X,Y,Z) = (   0.200,   2.000,   1.500)
+ MIN    SIGMA3 =  -386.841 AT (X,Y,Z) = (  -0.200,  -9.800,   0.000)
+
+ Case     2
+ SUBSURFACE STRESSES BLOCK  2:
+ 
+ ABSMAX SIGHYD = -1353.161 AT (X,Y,Z) = (  -0.200,  -0.200,   0.000)
+ MAX    SIGMA1 =     0.000 AT (X,Y,Z) = (   0.200,   0.600,   0.000)
+)");
+  ASSERT_EQ(r.cases.size(), 2u);
+  expect_close(value_of(r, 1, "patch 1/SUBS 1/SIGHYD"), -295.685);
+  expect_close(value_of(r, 1, "patch 1/SUBS 1/SIGVM"), 210.509);
+  expect_close(value_of(r, 1, "patch 1/SUBS 1/SIGMA3"), -386.841);
+  expect_close(value_of(r, 2, "SUBS 2/SIGHYD"), -1353.161);
+  EXPECT_EQ(value_of(r, 2, "SUBS 2/SIGMA1"), 0.0);
+  EXPECT_FALSE(r.cases[1].value("SUBS 1/SIGHYD"));
+}
+
 // Case headers counted independently of the parser: `^ Case\s+(\d+)` before the timing table.
 std::size_t count_case_headers(const std::filesystem::path& file) {
   std::ifstream in(file);

@@ -207,6 +207,9 @@ TEST(MasslessRail, TwoPatchContactConverges) {
   rigid.search.d_sep_mm = 6.0;
   rigid.search.d_comb_mm = 3.0;
   rigid.search.d_turn_mm = 9.0;
+  // The patches lie between D_SEP and D_TURN: the .inp route refuses the turned angles (not
+  // CONTACT's rule yet); the balance of the rail is what this test checks.
+  rigid.validated_only = false;
   for (double ky : {1e4, 3e4, 1e5}) {
     const std::string what = "ky " + std::to_string(ky);
     const WheelRailSolution s = WheelsetSolver().solve(on_massless_rail(rigid, ky, 0.0, 1e5, 0.0));
