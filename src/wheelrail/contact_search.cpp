@@ -13,13 +13,14 @@ namespace {
 
 constexpr double kNoWheel = 1e30;
 
-/// Roller rig: the wheel-frame x of the locus point on the wheel's circle at profile point w
-/// (radius r): where the wheel's surface normal n (track frame) is parallel to the roller's,
-/// n_x + (∂z_roller/∂x)·n_z = 0 — the track's condition n_x = 0 with the roller's curvature
-/// (spec/wheelrail-advanced.md §4.2). Solved exactly by secants from the track's locus x0
-/// (a fixed-point iteration would diverge for a roller smaller than the wheel).
-double roller_locus_x(const PlacedProfiles& prof, const WheelsetPose& pose, double y_ws,
-                      const CurvePoint& w, double r, double x0, double x_limit) {
+/// A rail that varies along x (a roller, a sliced rail): the wheel-frame x of the locus point on
+/// the wheel's circle at profile point w (radius r), where the wheel's surface normal n (track
+/// frame) is parallel to the rail's, n_x + (∂z_rail/∂x)·n_z = 0 — the track's condition n_x = 0
+/// with the rail's slope along x (spec/wheelrail-advanced.md §4.2). Solved exactly by secants
+/// from the track's locus x0 (a fixed-point iteration would diverge for a roller smaller than
+/// the wheel).
+double varying_rail_locus_x(const PlacedProfiles& prof, const WheelsetPose& pose, double y_ws,
+                            const CurvePoint& w, double r, double x0, double x_limit) {
   const Mat3& R = pose.wheel_rotation;
   const auto condition = [&](double x, bool& ok) {
     const double c = std::sqrt(std::max(r * r - x * x, 0.0));
@@ -66,7 +67,8 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
     const double r = r0 + w.z;
     double x = (r * w.dz_dy * R.r[0][1] - r_nom * R.r[0][2]) / R.r[0][0];
     x = std::clamp(x, -0.5 * r_nom, 0.5 * r_nom);
-    if (prof.roller()) x = roller_locus_x(prof, pose, y_off + yp, w, r, x, 0.5 * r_nom);
+    if (prof.rail_varies_along_x())
+      x = varying_rail_locus_x(prof, pose, y_off + yp, w, r, x, 0.5 * r_nom);
     const Vec3 q{x, y_off + yp, std::sqrt(std::max(r * r - x * x, 0.0))};
     Vec3 pt = pose.wheel_centre + R * q;
     if (prof.wheel_surface() != nullptr) {
@@ -134,7 +136,8 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
 void finish_region(ContactRegion& r, const PlacedProfiles& prof) {
   const double x = r.wx / r.weight, y = r.wy / r.weight;
   // On the rail's (or the roller's) surface: a roller lies lower at x ≠ 0.
-  r.reference = {x, y, prof.roller() ? prof.rail_surface_at(x, y).z : prof.rail_at_track_y(y).z};
+  r.reference = {
+      x, y, prof.rail_varies_along_x() ? prof.rail_surface_at(x, y).z : prof.rail_at_track_y(y).z};
   double d = r.wd / r.weight;
   constexpr double kHalfPi = 0.5 * std::numbers::pi;
   if (std::abs(std::abs(d) - kHalfPi) < 1e-3) d = std::copysign(kHalfPi - 1e-3, d);
@@ -275,8 +278,9 @@ void sample_wheel(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                   const WheelsetPose& pose_at_zero, GapSamples& s) {
   fill_locus(p, prof, pose_at_zero, s.base, s.locus_z);
   s.rail_drop.clear();
-  if (!prof.roller()) return;
-  // The roller's surface under the locus: lower than its top by the circle's fall at x_locus.
+  if (!prof.rail_varies_along_x()) return;
+  // The rail's surface under the locus where it differs from its section at x = 0: a roller's
+  // circle falls away, a sliced rail changes along the track.
   const GapFunction& g = s.base;
   s.rail_drop.assign(g.gap.size(), 0.0);
   for (std::size_t j = 0; j < g.gap.size(); ++j) {

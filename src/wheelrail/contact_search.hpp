@@ -64,8 +64,8 @@ struct GapSamples {
   GapFunction base;             ///< grid, x of the locus and rail inclination (gap unset)
   std::vector<double> rail_z;   ///< rail height per sample [mm] (NaN: outside the rail)
   std::vector<double> locus_z;  ///< locus height at z_ws = 0 [mm] (−huge: no wheel)
-  /// Roller rig: how much lower the roller's surface lies under the locus than its top [mm];
-  /// empty on a track.
+  /// A roller or sliced rail: how much lower the rail's surface lies under the locus than its
+  /// section at x = 0 [mm]; empty for a prismatic rail.
   std::vector<double> rail_drop;
 };
 

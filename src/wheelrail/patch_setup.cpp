@@ -30,9 +30,10 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
     CurveHint hint;  // the wheel profile segment, carried along the row
     for (int i = 0; i < mx; ++i) {
       const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i)) * f.ex;
-      // A rail is the same all along a row; a roller falls away from its top.
+      // A prismatic rail is the same all along a row; a roller or sliced rail is not.
       double t_rail_here = t_rail;
-      if (prof.roller() && !rail_surface_along(prof, point, f.en, t_rail, t_rail_here)) continue;
+      if (prof.rail_varies_along_x() && !rail_surface_along(prof, point, f.en, t_rail, t_rail_here))
+        continue;
       if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel, &hint)) {
         t_wheel = t_rail_here;
         continue;

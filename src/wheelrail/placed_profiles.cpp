@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "rollcontact/errors.hpp"
+
 namespace rollcontact::wheelrail {
 
 namespace {
@@ -59,19 +61,20 @@ double find_gauge_point(const ProfileCurve& rail, double gaught, double& top_z) 
   return y_min;
 }
 
-std::shared_ptr<const SlicedWheelSurface> surface_of(const model::WheelRailProfile& wheel) {
-  if (wheel.slices.u.empty()) return nullptr;
-  return std::make_shared<const SlicedWheelSurface>(wheel.slices, wheel.smoothing);
+std::shared_ptr<const SlicedSurface> surface_of(const model::WheelRailProfile& profile,
+                                                SurfaceBody body, double roll_rad) {
+  if (profile.slices.u.empty()) return nullptr;
+  return std::make_shared<const SlicedSurface>(profile.slices, profile.smoothing, body, roll_rad);
 }
 
-/// The cross-section of a sliced wheel at material angle θ as a curve: the surface is already
-/// smooth, so the curve interpolates its points (no second smoothing).
-ProfileCurve cross_section_curve(const SlicedWheelSurface& surface,
-                                 const model::ProfileSmoothing& smoothing, double theta_rad) {
+/// The cross-section of a sliced wheel at material angle θ, or of a sliced (and rolled) rail at
+/// track position u, as a curve: the surface is already smooth, so the curve interpolates its
+/// points (no second smoothing).
+ProfileCurve cross_section_curve(const SlicedSurface& surface,
+                                 const model::ProfileSmoothing& smoothing, double u, bool rail) {
   model::ProfileSmoothing interpolate = smoothing;
   interpolate.smooth = 0.0;
-  return ProfileCurve(model::WheelRailProfile{surface.cross_section(theta_rad), interpolate, {}},
-                      false);
+  return ProfileCurve(model::WheelRailProfile{surface.cross_section(u), interpolate, {}}, rail);
 }
 
 }  // namespace
@@ -84,12 +87,21 @@ PlacedProfiles::PlacedProfiles(const model::WheelRailProblem& p)
       ytape_(p.wheelset.tape_circle_y_mm),
       rail_(p.rail, true, rail_roll_of(p), 0.0, 0.0),
       wheel_(p.wheel, false),
-      wheel_surface_(surface_of(p.wheel)),
+      wheel_surface_(surface_of(p.wheel, SurfaceBody::Wheel, 0.0)),
+      rail_surface_(surface_of(p.rail, SurfaceBody::Rail, rail_roll_of(p))),
       roller_(p.roller.enabled) {
   if (wheel_surface_) {
     // The tape circle of a sliced wheel is taken at θ = 0 (a fixed r0 for every rotation).
-    wheel_ = cross_section_curve(*wheel_surface_, p.wheel.smoothing, 0.0);
+    wheel_ = cross_section_curve(*wheel_surface_, p.wheel.smoothing, 0.0, false);
     wheel_theta_ = 0.0;
+  }
+  if (rail_surface_) {
+    if (gauge_height_ > 0.0)
+      throw ProblemError(
+          "a rail that varies along the track (rail slices) is placed absolutely: the gauge "
+          "height GAUGHT must be ≤ 0 (spec/physics.md §13.9)");
+    rail_u_ = p.motion.s_mm;
+    rail_ = cross_section_curve(*rail_surface_, p.rail.smoothing, rail_u_, true);
   }
   if (gauge_height_ > 0.0) {
     gauge_y_ = find_gauge_point(rail_, gauge_height_, rail_top_z_);
@@ -127,11 +139,16 @@ void PlacedProfiles::place(const model::WheelRailProblem& p) {
     roller_axle_z_ = rail_z_ + p.roller.nominal_radius_mm;
     roller_sign_ = p.roller.nominal_radius_mm < 0.0 ? -1.0 : 1.0;
   }
+  // A sliced rail's cross-section under the wheelset, at u = S_WS.
+  if (rail_surface_ && p.motion.s_mm != rail_u_) {
+    rail_u_ = p.motion.s_mm;
+    rail_ = cross_section_curve(*rail_surface_, rail_profile_.smoothing, rail_u_, true);
+  }
   // The wheel's own pitch deviation DPITCHW turns its slices with the wheelset's pitch.
   const double theta = -(p.motion.pitch_rad + p.wheel_deviation.dpitch_rad);
   if (wheel_surface_ && theta != wheel_theta_) {
     wheel_theta_ = theta;
-    wheel_ = cross_section_curve(*wheel_surface_, wheel_profile_.smoothing, wheel_theta_);
+    wheel_ = cross_section_curve(*wheel_surface_, wheel_profile_.smoothing, wheel_theta_, false);
   }
 }
 
@@ -146,6 +163,12 @@ RailSurfacePoint PlacedProfiles::rail_surface_at(double x, double y) const {
   const CurvePoint c = rail_at_track_y(y);
   RailSurfacePoint s;
   if (!c.found) return s;
+  if (rail_surface_) {
+    // The section at u = S_WS + x, in the rail's profile coordinates (rolled, not shifted).
+    const SurfacePoint r = rail_surface_->at(rail_u_ + x, y - rail_y_);
+    if (r.found) s = {true, r.z + rail_z_, r.dz_du, r.dz_dy};
+    return s;
+  }
   if (!roller_) {
     s = {true, c.z, 0.0, c.dz_dy};
     return s;

@@ -10,7 +10,7 @@
 
 #include "rollcontact/model/wheelrail.hpp"
 #include "wheelrail/profile_curve.hpp"
-#include "wheelrail/wheel_surface.hpp"
+#include "wheelrail/sliced_surface.hpp"
 
 namespace rollcontact::wheelrail {
 
@@ -31,13 +31,14 @@ class PlacedProfiles {
   /// Sets the rail's and wheel's offsets for `problem` (cheap).
   void place(const model::WheelRailProblem& problem);
 
-  /// The rail profile rotated by its roll, origin not shifted; track y = rail_y + curve y.
+  /// The rail profile rotated by its roll, origin not shifted; track y = rail_y + curve y. For a
+  /// sliced rail its cross-section at the wheelset (u = S_WS, remade by place()).
   const ProfileCurve& rail() const noexcept { return rail_; }
   /// The wheel profile; for a sliced wheel its cross-section at the contact (material angle
   /// wheel_theta_rad(), remade by place() when the pitch changes).
   const ProfileCurve& wheel() const noexcept { return wheel_; }
   /// The wheel surface of a sliced wheel (physics.md §13.9); nullptr for a plain profile.
-  const SlicedWheelSurface* wheel_surface() const noexcept { return wheel_surface_.get(); }
+  const SlicedSurface* wheel_surface() const noexcept { return wheel_surface_.get(); }
   /// Material angle θ of the wheel point straight below the axle: −PITCH_WS − DPITCHW [rad]. A
   /// point at angle φ = atan2(x, z) from the axle (wheelset frame) is the material angle θ + φ.
   double wheel_theta_rad() const noexcept { return wheel_theta_; }
@@ -51,6 +52,13 @@ class PlacedProfiles {
   /// revolution, which falls away from x = 0 (rises towards the wheel on an internal roller).
   RailSurfacePoint rail_surface_at(double x, double y) const;
   bool roller() const noexcept { return roller_; }
+  /// The rail's surface changes along x: a roller, or a rail whose profile varies along the
+  /// track (slices). Contact search and undeformed distance then evaluate it in 3-D.
+  bool rail_varies_along_x() const noexcept { return roller_ || rail_surface_ != nullptr; }
+  /// A sliced rail's surface (physics.md §13.9); nullptr for a plain rail profile.
+  const SlicedSurface* rail_surface() const noexcept { return rail_surface_.get(); }
+  /// Track position u of the sliced rail's cross-section at x = 0 (S_WS) [mm]; 0 otherwise.
+  double rail_u_mm() const noexcept { return rail_u_; }
   /// Roller rig: height of the roller axle [mm, down] (the profile origin's + NOMRADR).
   double roller_axle_z_mm() const noexcept { return roller_axle_z_; }
   /// Wheel-profile y of the wheelset-frame lateral coordinate: y_p = y_ws − offset.
@@ -65,7 +73,8 @@ class PlacedProfiles {
   model::WheelRailProfile rail_profile_, wheel_profile_;
   double rail_roll_ = 0.0, gauge_height_ = 0.0, ytape_ = 0.0;
   ProfileCurve rail_, wheel_;
-  std::shared_ptr<const SlicedWheelSurface> wheel_surface_;
+  std::shared_ptr<const SlicedSurface> wheel_surface_, rail_surface_;
+  double rail_u_ = 0.0;
   double wheel_theta_ = 0.0;
   std::optional<double> gauge_y_;
   double rail_top_z_ = 0.0;

@@ -13,11 +13,11 @@ constexpr double kScanStep_rad = 0.002;  ///< ≈ 1 mm: finer than any flat's ed
 
 LocusPoint sliced_locus_point(const PlacedProfiles& prof, const WheelsetPose& pose, double y_p,
                               double phi_start) {
-  const SlicedWheelSurface& surface = *prof.wheel_surface();
+  const SlicedSurface& surface = *prof.wheel_surface();
   const double y_ws = prof.wheel_y_offset_mm() + y_p, r0 = prof.wheel_r0_mm();
   bool found = true;
   const auto point_at = [&](double phi) {
-    const WheelSurfacePoint w = surface.at(prof.wheel_theta_rad() + phi, y_p);
+    const SurfacePoint w = surface.at(prof.wheel_theta_rad() + phi, y_p);
     if (!w.found) found = false;
     const double r = r0 + w.z;
     return pose.wheel_centre +

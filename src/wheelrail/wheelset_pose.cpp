@@ -10,18 +10,18 @@ namespace {
 /// with ρ the distance from the axle and θ the material angle of the point, so the radius varies
 /// along the line as the wheel's does around its circumference (physics.md §13.9).
 bool sliced_wheel_along(const PlacedProfiles& profiles, Vec3 q0, Vec3 dq, double t0, double& t) {
-  const SlicedWheelSurface& surface = *profiles.wheel_surface();
+  const SlicedSurface& surface = *profiles.wheel_surface();
   const double y_off = profiles.wheel_y_offset_mm(), r0 = profiles.wheel_r0_mm();
   t = t0;
   for (int it = 0; it < 30; ++it) {
     const Vec3 q = q0 + t * dq;
     const double rho2 = q.x * q.x + q.z * q.z, rho = std::sqrt(rho2);
     const double phi = std::atan2(q.x, q.z);
-    const WheelSurfacePoint w = surface.at(profiles.wheel_theta_rad() + phi, q.y - y_off);
+    const SurfacePoint w = surface.at(profiles.wheel_theta_rad() + phi, q.y - y_off);
     if (!w.found) return false;
     const double f = rho - (r0 + w.z);
     const double dphi = (q.z * dq.x - q.x * dq.z) / rho2;
-    const double df = (q.x * dq.x + q.z * dq.z) / rho - w.dz_dy * dq.y - w.dz_dtheta * dphi;
+    const double df = (q.x * dq.x + q.z * dq.z) / rho - w.dz_dy * dq.y - w.dz_du * dphi;
     if (df == 0.0 || !std::isfinite(df)) return false;
     const double step = f / df;
     t -= step;
@@ -98,8 +98,8 @@ bool wheel_surface_along(const PlacedProfiles& profiles, const WheelsetPose& pos
 
 bool rail_surface_along(const PlacedProfiles& profiles, Vec3 from, Vec3 dir, double t0, double& t) {
   t = t0;
-  if (profiles.roller()) {
-    // f(t) = z_surface(x(t), y(t)) − z(t) on the roller's body of revolution.
+  if (profiles.rail_varies_along_x()) {
+    // f(t) = z_surface(x(t), y(t)) − z(t) on the 3-D surface (roller, sliced rail).
     for (int it = 0; it < 30; ++it) {
       const Vec3 q = from + t * dir;
       const RailSurfacePoint r = profiles.rail_surface_at(q.x, q.y);

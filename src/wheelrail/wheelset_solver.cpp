@@ -66,8 +66,8 @@ struct WheelsetSolver::Impl {
   /// the rail samples are kept while the rail placement and DS stay the same.
   void prepare(const model::WheelRailProblem& p) {
     const PlacedProfiles& prof = profiles_for(p);
-    const RailKey key{profiles_generation, p.search.ds_mm, prof.rail_y_mm(), prof.rail_z_mm(),
-                      prof.rail_roll_rad()};
+    const RailKey key{profiles_generation, p.search.ds_mm,       prof.rail_y_mm(),
+                      prof.rail_z_mm(),    prof.rail_roll_rad(), prof.rail_u_mm()};
     if (!(key == rail_key) || samples.rail_z.empty()) {
       samples = wheelrail::sample_rail(p, prof);
       rail_key = key;
@@ -99,6 +99,7 @@ struct WheelsetSolver::Impl {
   struct RailKey {
     unsigned long generation = 0;  ///< of the profile curves
     double ds = 0.0, rail_y = 0.0, rail_z = 0.0, rail_roll = 0.0;
+    double rail_u = 0.0;  ///< a sliced rail's section (S_WS)
     bool operator==(const RailKey&) const = default;
   };
   RailKey rail_key;

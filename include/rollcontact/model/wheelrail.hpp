@@ -33,11 +33,13 @@ struct ProfileSmoothing {
 
 /// A rail or wheel profile in canonical form (Profile: mm, z down, y to the field side).
 /// A profile that varies (spec/physics.md §13.9): for a wheel, slices around its circumference
-/// (`.slcw`, θ [rad]); each slice is smoothed like `points`. Empty: a plain profile.
+/// (`.slcw`, θ [rad]); for a rail, slices along the track (`.slcs`, u = S_WS + x [mm]: switches
+/// and crossings; the rail then placed absolutely, GAUGHT ≤ 0). Each slice is smoothed like
+/// `points`. Empty: a plain profile.
 struct WheelRailProfile {
   Profile points;
   ProfileSmoothing smoothing;
-  SlicedProfile slices;  ///< wheel only; `points` then holds the first slice
+  SlicedProfile slices;  ///< `points` then holds the first slice
 };
 
 /// Contact search and patch grids (the D=2 line).

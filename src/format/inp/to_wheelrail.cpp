@@ -82,7 +82,6 @@ void check_supported(const WheelRailRecord& r) {
   // mbench_a22_varfric cases 1, 2, 4 and 6 give CONTACT's digits. Case 3, whose two patches lie
   // between D_SEP and D_TURN, is refused by the solver (validated_only) until the turning rule
   // agrees (docs/decisions.md).
-  if (r.rail.sliced) not_supported("variable rail profiles (rail slices files)");
   // The wheel/rail solver takes sliced wheels (model::WheelRailProfile::slices); on `wheelflat`
   // it gives CONTACT's z_ws in every case and its forces within 0.5 % away from the flat, but
   // the contact location near and on the flat differs by 0.006-1 mm (the tolerance is 5e-3 mm:
@@ -111,6 +110,10 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   if (r.wheel.sliced) {
     p.wheel.slices = r.wheel.slices;
     if (!p.wheel.slices.slices.empty()) p.wheel.points = p.wheel.slices.slices.front();
+  }
+  if (r.rail.sliced) {
+    p.rail.slices = r.rail.slices;
+    if (!p.rail.slices.slices.empty()) p.rail.points = p.rail.slices.slices.front();
   }
   const TrackDimensions& tr = r.track;
   p.track = {tr.gaught, tr.gaugwd, tr.raily0, tr.railz0, r.is_roller() ? 0.0 : tr.cant, tr.curv};

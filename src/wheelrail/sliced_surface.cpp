@@ -1,4 +1,4 @@
-#include "wheelrail/wheel_surface.hpp"
+#include "wheelrail/sliced_surface.hpp"
 
 #include <fmt/format.h>
 
@@ -94,9 +94,9 @@ double wrap_angle(double theta) {
 
 }  // namespace
 
-SlicedWheelSurface::SlicedWheelSurface(const SlicedProfile& sp,
-                                       const model::ProfileSmoothing& smoothing)
-    : intpol_(sp.u_intpol), theta_(sp.u) {
+SlicedSurface::SlicedSurface(const SlicedProfile& sp, const model::ProfileSmoothing& smoothing,
+                             SurfaceBody body, double roll_rad)
+    : body_(body), intpol_(sp.u_intpol), theta_(sp.u) {
   if (sp.nfeat > 1)
     throw NotSupportedError(
         fmt::format("not supported yet: module 1 slices with features (NFEAT = {}) in '{}'",
@@ -106,7 +106,10 @@ SlicedWheelSurface::SlicedWheelSurface(const SlicedProfile& sp,
   // Per slice: the plain-profile curve, resampled uniformly in its own arc length.
   std::vector<std::vector<double>> ys, zs;
   for (const Profile& slice : sp.slices) {
-    const ProfileCurve curve(model::WheelRailProfile{slice, smoothing, {}}, false);
+    const bool rail = body == SurfaceBody::Rail;
+    const ProfileCurve curve =
+        rail ? ProfileCurve(model::WheelRailProfile{slice, smoothing, {}}, true, roll_rad, 0.0, 0.0)
+             : ProfileCurve(model::WheelRailProfile{slice, smoothing, {}}, false);
     if (points_ == 0)
       points_ = std::max<std::size_t>(
           4, static_cast<std::size_t>(std::ceil(curve.length() / kResampleStep_mm)) + 1);
@@ -121,7 +124,7 @@ SlicedWheelSurface::SlicedWheelSurface(const SlicedProfile& sp,
       if ((y[k] - y[k - 1]) * (y.back() - y.front()) <= 0.0)
         throw GeometryError(fmt::format(
             "slice '{}' of '{}': its lateral coordinate turns back (y not monotone along the "
-            "profile), which a wheel surface in (θ, y) cannot represent",
+            "profile), which a surface in (u, y) cannot represent",
             slice.file, sp.file));
     y_min_ = ys.empty() ? std::min(y.front(), y.back())
                         : std::max(y_min_, std::min(y.front(), y.back()));
@@ -163,12 +166,16 @@ SlicedWheelSurface::SlicedWheelSurface(const SlicedProfile& sp,
     y_nodes_[k] = (ys[0][k] + 4.0 * ys[0][k + 1] + ys[0][k + 2]) / 6.0;
 }
 
-SlicedWheelSurface::ThetaBlend SlicedWheelSurface::blend_at(double theta_rad) const {
+double SlicedSurface::along(double u) const {
+  return body_ == SurfaceBody::Wheel ? wrap_angle(u) : u;
+}
+
+SlicedSurface::ThetaBlend SlicedSurface::blend_at(double theta_rad) const {
   return intpol_ == 1 ? interpolating_blend(theta_rad) : approximating_blend(theta_rad);
 }
 
-SlicedWheelSurface::ThetaBlend SlicedWheelSurface::approximating_blend(double theta_rad) const {
-  double th = wrap_angle(theta_rad);
+SlicedSurface::ThetaBlend SlicedSurface::approximating_blend(double theta_rad) const {
+  double th = along(theta_rad);
   const bool outside = th <= theta_.front() || th >= theta_.back();
   th = std::clamp(th, theta_.front(), theta_.back());
   // Knot span k: knots_[k] <= θ < knots_[k + 1]; B-splines k−3..k are nonzero there.
@@ -205,8 +212,8 @@ SlicedWheelSurface::ThetaBlend SlicedWheelSurface::approximating_blend(double th
   return b;
 }
 
-SlicedWheelSurface::ThetaBlend SlicedWheelSurface::interpolating_blend(double theta_rad) const {
-  double th = wrap_angle(theta_rad);
+SlicedSurface::ThetaBlend SlicedSurface::interpolating_blend(double theta_rad) const {
+  double th = along(theta_rad);
   const bool outside = th <= theta_.front() || th >= theta_.back();
   th = std::clamp(th, theta_.front(), theta_.back());
   const std::size_t n = theta_.size();
@@ -223,8 +230,8 @@ SlicedWheelSurface::ThetaBlend SlicedWheelSurface::interpolating_blend(double th
   return r;
 }
 
-double SlicedWheelSurface::blended(const std::vector<double>& table, const ThetaBlend& b,
-                                   std::size_t k, double* d) const {
+double SlicedSurface::blended(const std::vector<double>& table, const ThetaBlend& b, std::size_t k,
+                              double* d) const {
   double v = 0.0, dv = 0.0;
   for (std::size_t a = 0; a < 4; ++a) {
     const double c = table[b.row[a] * ctrl_ + k];
@@ -235,7 +242,7 @@ double SlicedWheelSurface::blended(const std::vector<double>& table, const Theta
   return v;
 }
 
-WheelSurfacePoint SlicedWheelSurface::at(double theta_rad, double y) const {
+SurfacePoint SlicedSurface::at(double theta_rad, double y) const {
   const ThetaBlend b = blend_at(theta_rad);
   const auto node_y = [&](std::size_t k) {
     return (blended(ty_, b, k) + 4.0 * blended(ty_, b, k + 1) + blended(ty_, b, k + 2)) / 6.0;
@@ -273,7 +280,7 @@ WheelSurfacePoint SlicedWheelSurface::at(double theta_rad, double y) const {
     u = next;
   }
   bspline_basis(u, w, dw);
-  WheelSurfacePoint p;
+  SurfacePoint p;
   double zu = 0.0, yth = 0.0, zth = 0.0;
   yu = 0.0;
   for (std::size_t a = 0; a < 4; ++a) {
@@ -284,23 +291,25 @@ WheelSurfacePoint SlicedWheelSurface::at(double theta_rad, double y) const {
     zth += w[a] * dcz[a];
   }
   p.dz_dy = zu / yu;
-  p.dz_dtheta = zth - p.dz_dy * yth;
+  p.dz_du = zth - p.dz_dy * yth;
   p.found = std::isfinite(p.z) && std::isfinite(p.dz_dy);
   return p;
 }
 
-Profile SlicedWheelSurface::cross_section(double theta_rad) const {
+Profile SlicedSurface::cross_section(double theta_rad) const {
   const ThetaBlend b = blend_at(theta_rad);
   Profile p;
   p.format = ProfileFormat::Plain;
-  p.file = fmt::format("wheel slices at theta = {:.6f} rad", theta_rad);
+  const bool wheel = body_ == SurfaceBody::Wheel;
+  p.file = wheel ? fmt::format("wheel slices at theta = {:.6f} rad", theta_rad)
+                 : fmt::format("rail slices at u = {:.6f} mm", theta_rad);
   p.y.resize(points_);
   p.z.resize(points_);
   for (std::size_t k = 0; k < points_; ++k) {
     p.y[k] = (blended(ty_, b, k) + 4.0 * blended(ty_, b, k + 1) + blended(ty_, b, k + 2)) / 6.0;
     p.z[k] = (blended(tz_, b, k) + 4.0 * blended(tz_, b, k + 1) + blended(tz_, b, k + 2)) / 6.0;
   }
-  if (p.y.front() < p.y.back()) {  // canonical wheel order: descending y
+  if (wheel == (p.y.front() < p.y.back())) {  // canonical order: a wheel's descending y
     std::reverse(p.y.begin(), p.y.end());
     std::reverse(p.z.begin(), p.z.end());
   }

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "wheelrail/profile_curve.hpp"
-#include "wheelrail/wheel_surface.hpp"
+#include "wheelrail/sliced_surface.hpp"
 #include "wheelrail_problems.hpp"
 
 namespace rollcontact::wheelrail {
@@ -41,29 +41,29 @@ SlicedProfile slices_of(const std::vector<double>& theta,
   return s;
 }
 
-TEST(SlicedWheelSurface, IdenticalSlicesAreThePlainProfile) {
+TEST(SlicedSurface, IdenticalSlicesAreThePlainProfile) {
   const model::ProfileSmoothing smoothing = smoothing_with(5.0);
   const ProfileCurve plain(model::WheelRailProfile{tread(0.0), smoothing, {}}, false);
   for (int intpol : {1, 2}) {
-    const SlicedWheelSurface surface(
+    const SlicedSurface surface(
         slices_of(
             {-3.0, -1.2, 0.0, 0.4, 1.1, 3.1}, [](double) { return 0.0; }, intpol),
         smoothing);
     for (double th : {-3.1, -2.0, 0.0, 0.2, 0.77, 3.0})
       for (double y : {-35.0, -20.3, -5.0, 0.0, 12.7, 55.0}) {
-        const WheelSurfacePoint p = surface.at(th, y);
+        const SurfacePoint p = surface.at(th, y);
         const CurvePoint c = plain.at_y(y);
         ASSERT_TRUE(p.found);
         EXPECT_NEAR(p.z, c.z, 1e-6) << "intpol " << intpol << " θ " << th << " y " << y;
         EXPECT_NEAR(p.dz_dy, c.dz_dy, 1e-5);
-        EXPECT_NEAR(p.dz_dtheta, 0.0, 1e-9);
+        EXPECT_NEAR(p.dz_du, 0.0, 1e-9);
       }
     EXPECT_FALSE(surface.at(0.0, 61.0).found);
     EXPECT_FALSE(surface.at(0.0, -41.0).found);
   }
 }
 
-TEST(SlicedWheelSurface, AFlatHasItsDepthAtItsAngle) {
+TEST(SlicedSurface, AFlatHasItsDepthAtItsAngle) {
   // A flat of depth D at θ0 on a wheel of radius R: the radius drops by R − (R − D)/cos(θ − θ0)
   // within the half-angle acos(1 − D/R). Slices every 0.01 rad around the whole wheel.
   const double R = 490.0, D = 1.2, th0 = 0.65, half = std::acos(1.0 - D / R);
@@ -74,21 +74,21 @@ TEST(SlicedWheelSurface, AFlatHasItsDepthAtItsAngle) {
   std::vector<double> theta;
   for (int i = -314; i <= 314; ++i) theta.push_back(0.01 * i);
   const model::ProfileSmoothing smoothing = smoothing_with(0.0);
-  const double z_round = SlicedWheelSurface(slices_of(theta, depth, 1), smoothing).at(-2.0, 10.0).z;
+  const double z_round = SlicedSurface(slices_of(theta, depth, 1), smoothing).at(-2.0, 10.0).z;
   EXPECT_NEAR(z_round, tread_z(10.0), 1e-6);
 
   // Interpolating: through every slice, so the full depth at the flat's centre.
-  const SlicedWheelSurface interp(slices_of(theta, depth, 1), smoothing);
+  const SlicedSurface interp(slices_of(theta, depth, 1), smoothing);
   EXPECT_NEAR(interp.at(th0, 10.0).z, z_round - D, 1e-6);
   EXPECT_NEAR(interp.at(th0 + 0.02, 10.0).z, z_round - depth(th0 + 0.02), 1e-6);
   // Slope in θ along the flat: ∂z/∂θ = −d'(θ) = (R − D) sin/cos² (the radius grows away).
   const double d = 0.015;
-  EXPECT_NEAR(interp.at(th0 + d, 10.0).dz_dtheta,
-              (R - D) * std::sin(d) / (std::cos(d) * std::cos(d)), 1e-2);  // 0.1 %: spline in θ
+  EXPECT_NEAR(interp.at(th0 + d, 10.0).dz_du, (R - D) * std::sin(d) / (std::cos(d) * std::cos(d)),
+              1e-2);  // 0.1 %: spline in θ
 
   // Approximating: the B-spline with the slices as control points averages neighbours
   // (1, 4, 1)/6 at a slice: the depth there is D − (R − D)·h²/6 for the flat's parabola.
-  const SlicedWheelSurface approx(slices_of(theta, depth, 2), smoothing);
+  const SlicedSurface approx(slices_of(theta, depth, 2), smoothing);
   const double h = 0.01;
   const double expected = (depth(th0 - h) + 4.0 * depth(th0) + depth(th0 + h)) / 6.0;
   EXPECT_NEAR(approx.at(th0, 10.0).z, z_round - expected, 1e-6);
@@ -98,26 +98,26 @@ TEST(SlicedWheelSurface, AFlatHasItsDepthAtItsAngle) {
   EXPECT_NEAR(interp.at(th0 + 2.0 * std::numbers::pi, 10.0).z, interp.at(th0, 10.0).z, 1e-9);
 }
 
-TEST(SlicedWheelSurface, ConstantBeyondTheSlicesCovered) {
+TEST(SlicedSurface, ConstantBeyondTheSlicesCovered) {
   const model::ProfileSmoothing smoothing = smoothing_with(0.0);
   const auto depth = [](double th) { return 0.1 * th; };
   std::vector<double> theta;
   for (int i = -10; i <= 10; ++i) theta.push_back(0.1 * i);
   for (int intpol : {1, 2}) {
-    const SlicedWheelSurface s(slices_of(theta, depth, intpol), smoothing);
+    const SlicedSurface s(slices_of(theta, depth, intpol), smoothing);
     EXPECT_NEAR(s.at(-2.5, 0.0).z, tread_z(0.0) + 0.1, 1e-6);
     EXPECT_NEAR(s.at(2.5, 0.0).z, tread_z(0.0) - 0.1, 1e-6);
-    EXPECT_EQ(s.at(2.5, 0.0).dz_dtheta, 0.0);
+    EXPECT_EQ(s.at(2.5, 0.0).dz_du, 0.0);
     EXPECT_NEAR(s.at(0.25, 0.0).z, tread_z(0.0) - 0.025, 1e-6);  // linear stays linear (interior)
   }
 }
 
-TEST(SlicedWheelSurface, CrossSectionIsTheProfileAtThatAngle) {
+TEST(SlicedSurface, CrossSectionIsTheProfileAtThatAngle) {
   const model::ProfileSmoothing smoothing = smoothing_with(0.0);
   const auto depth = [](double th) { return 0.2 * std::sin(th); };
   std::vector<double> theta;
   for (int i = -32; i <= 32; ++i) theta.push_back(0.1 * i);
-  const SlicedWheelSurface s(slices_of(theta, depth, 1), smoothing);
+  const SlicedSurface s(slices_of(theta, depth, 1), smoothing);
   const Profile p = s.cross_section(0.3);
   ASSERT_GT(p.y.size(), 100u);
   EXPECT_GT(p.y.front(), p.y.back());  // wheel order
