@@ -38,6 +38,11 @@ class PatchSolver {
   /// Forgets the previous solution (the cached operators stay).
   void reset_sequence() noexcept;
 
+  /// Makes `solution` the previous one of the sequence, its grid's origin at (origin_x_mm,
+  /// origin_y_mm) of the sequence's frame (model::SequenceLink): for a caller that solved trial
+  /// problems with becomes_previous = false (a force iteration) and keeps one as the result.
+  void set_previous(Solution solution, double origin_x_mm, double origin_y_mm);
+
   const SolveOptions& options() const noexcept;
 
   struct Impl;  ///< cached operators and the previous solution (src/contact/patch_solver_impl.hpp)

@@ -57,7 +57,10 @@ struct PreviousFields {
   double veloc = 1.0;               ///< rolling velocity [mm/s] of the previous case
 };
 
-PreviousFields map_previous(const Solution* prev, const Grid& grid) {
+/// `shift_x`, `shift_y` [mm]: how far this grid's coordinate origin lies from the previous one's
+/// in the sequence's common frame (model::SequenceLink::origin_*).
+PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift_x,
+                            double shift_y) {
   PreviousFields out;
   const std::size_t n = grid.size();
   out.px.assign(n, 0.0);
@@ -80,8 +83,8 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid) {
   const Grid& old = prev->grid;
   if (std::abs(old.dx - grid.dx) > 1e-6 * grid.dx || std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
     return out;
-  const long ox = std::lround((grid.xl - old.xl) / grid.dx);
-  const long oy = std::lround((grid.yl - old.yl) / grid.dy);
+  const long ox = std::lround((grid.xl + shift_x - old.xl) / grid.dx);
+  const long oy = std::lround((grid.yl + shift_y - old.yl) / grid.dy);
   for (int iy = 0; iy < grid.my; ++iy) {
     const long jy = iy + oy;
     if (jy < 0 || jy >= old.my) continue;
@@ -895,7 +898,8 @@ void CaseSolver::run() {
       problem_.sequence.continue_previous && st_.previous && !st_.previous->pn.empty()
           ? &*st_.previous
           : nullptr;
-  prev_ = map_previous(prev, grid_);
+  prev_ = map_previous(prev, grid_, problem_.sequence.origin_x_mm - st_.previous_origin_x,
+                       problem_.sequence.origin_y_mm - st_.previous_origin_y);
   layer_plastic_ = problem_.bodies.has_layer && problem_.bodies.layer.plastic() && !simplified_;
   if (layer_plastic_) {
     if (kind == model::TangentialKind::TransientRolling &&
@@ -1153,7 +1157,11 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
     return sol;
   }
   // A problem that does not become the previous one leaves the stored state as it was.
-  if (problem.sequence.becomes_previous || !st.previous) st.previous = sol;
+  if (problem.sequence.becomes_previous || !st.previous) {
+    st.previous = sol;
+    st.previous_origin_x = problem.sequence.origin_x_mm;
+    st.previous_origin_y = problem.sequence.origin_y_mm;
+  }
   return sol;
 }
 

@@ -15,6 +15,8 @@ struct PatchSolver::Impl {
   SolveOptions options;
   OperatorCache operators;
   std::optional<Solution> previous;  ///< last solved case (P=0 continuation, warm starts)
+  /// Where the previous solution's grid origin lies in the sequence's frame (SequenceLink).
+  double previous_origin_x = 0.0, previous_origin_y = 0.0;
 };
 
 }  // namespace rollcontact

@@ -23,13 +23,13 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
   std::vector<double> h(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my), kFarAway);
   double h_min = kFarAway;
   for (int j = 0; j < my; ++j) {
-    const Vec3 on_line = f.origin + (s.ds_mm * (s.iy0 + j)) * f.es;
+    const Vec3 on_line = f.origin + (s.ds_mm * (s.iy0 + j) - s.origin_y_mm) * f.es;
     double t_rail = 0.0;
     if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) continue;
     double t_wheel = t_rail;
     CurveHint hint;  // the wheel profile segment, carried along the row
     for (int i = 0; i < mx; ++i) {
-      const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i)) * f.ex;
+      const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i) - s.origin_x_mm) * f.ex;
       // A prismatic rail is the same all along a row; a roller or sliced rail is not.
       double t_rail_here = t_rail;
       if (prof.rail_varies_along_x() && !rail_surface_along(prof, point, f.en, t_rail, t_rail_here))
@@ -77,15 +77,17 @@ void set_attenuated_parts(const PlacedProfiles& prof, const ContactRegion& regio
       gap.patch_factors.push_back(region.part_factors[a * n + b]);
 }
 
-/// Element centres at multiples of (DX, DS) covering [x_lo, x_hi] × [s_lo, s_hi] (relative to
-/// the reference point) plus a guard element per side; sets s.ix0, s.iy0, s.dx_mm, s.ds_mm and
-/// returns (mx, my). DX, DS are doubled while the grid has NPOT_MAX elements or more.
+/// Element centres at multiples of (DX, DS) covering [x_lo, x_hi] × [s_lo, s_hi] (in the frame
+/// whose origin the reference point has at s.origin_*) plus a guard element per side; sets
+/// s.ix0, s.iy0, s.dx_mm, s.ds_mm and returns (mx, my). DX, DS are doubled while the grid has
+/// NPOT_MAX elements or more — except on a super grid, whose element positions must stay.
 std::pair<int, int> size_grid(const model::WheelRailProblem& p, double x_lo, double x_hi,
                               double s_lo, double s_hi, PatchSetup& s,
                               std::vector<std::string>& warnings) {
   s.dx_mm = p.search.dx_mm;
   s.ds_mm = p.search.ds_mm;
   int mx = 0, my = 0;
+  const bool fixed = on_super_grid(p);
   for (int doubling = 0;; ++doubling) {
     s.ix0 = static_cast<int>(std::floor(x_lo / s.dx_mm)) - 1;
     s.iy0 = static_cast<int>(std::floor(std::min(s_lo, s_hi) / s.ds_mm)) - 1;
@@ -99,7 +101,7 @@ std::pair<int, int> size_grid(const model::WheelRailProblem& p, double x_lo, dou
     s.iy0 -= pad_y / 2;
     mx += pad_x;
     my += pad_y;
-    if (static_cast<long>(mx) * my < p.search.max_elements || doubling > 20) break;
+    if (static_cast<long>(mx) * my < p.search.max_elements || doubling > 20 || fixed) break;
     s.dx_mm *= 2.0;
     s.ds_mm *= 2.0;
     warnings.push_back(fmt::format(
@@ -169,6 +171,18 @@ WheelPointMotion wheel_point_motion(const model::WheelRailProblem& p, const Whee
   return w;
 }
 
+/// T=1 (shifts): the velocity line holds the increments of one step, so the "velocity"
+/// differences are the shift distances themselves: V = 1, χ = 0, δq = 1
+/// (wheelrail-advanced.md §5.2).
+bool is_shift(const model::WheelRailProblem& p) {
+  return p.patch.tangential.kind == model::TangentialKind::Shift;
+}
+void as_shift(PatchKinematics& k) {
+  k.veloc_mm_s = 1.0;
+  k.chi_rad = 0.0;
+  k.dq_mm = 1.0;
+}
+
 /// Roller rig (spec/wheelrail-advanced.md §4.3): the contact stays where it is and both bodies
 /// turn through it — the roller about its axle (0, y, z_axle) at RPITCH (yawing at
 /// −r·RPITCH·CURV, r the contact's distance from the axle), the wheel about its own. V is the
@@ -195,15 +209,15 @@ PatchKinematics roller_kinematics(const model::WheelRailProblem& p, const Wheels
       (std::abs(vp) >= std::abs(vq) && vp <= 0.0) || (std::abs(vq) > std::abs(vp) && vq <= 0.0);
   k.chi_rad = forward ? 0.0 : std::numbers::pi;
   k.dq_mm = p.search.dq_rel * p.search.dx_mm;
+  if (is_shift(p)) as_shift(k);
   set_creepages(k, f, v_P, v_Q, omega_P, omega_Q);
   return k;
 }
 
-}  // namespace
-
-PatchKinematics patch_kinematics(const model::WheelRailProblem& p, const WheelsetPose& pose,
+/// Track (physics.md §13.5): the rail at rest but for its deviation rates and the curve's yaw;
+/// V the mean of the wheelset's forward speed and its rolling speed, χ from their signs.
+PatchKinematics track_kinematics(const model::WheelRailProblem& p, const WheelsetPose& pose,
                                  const PlacedProfiles& prof, const ContactFrame& f, double pen_mm) {
-  if (p.roller.enabled) return roller_kinematics(p, pose, prof, f, pen_mm);
   const model::WheelsetState& m = p.motion;
   const model::RailState& rs = p.rail_state;
   // Rail material point P: rail deviation rates and the track's yaw rate in a curve.
@@ -227,30 +241,65 @@ PatchKinematics patch_kinematics(const model::WheelRailProblem& p, const Wheelse
                        (std::abs(v_roll) > std::abs(v_est) && v_roll <= 0.0);
   k.chi_rad = forward ? 0.0 : std::numbers::pi;
   k.dq_mm = p.search.dq_rel * p.search.dx_mm;
+  if (is_shift(p)) as_shift(k);
   set_creepages(k, f, v_P, v_Q, omega_P, omega_Q);
   return k;
 }
 
+}  // namespace
+
+bool on_super_grid(const model::WheelRailProblem& p) {
+  const model::TangentialKind k = p.patch.tangential.kind;
+  return k == model::TangentialKind::Shift || k == model::TangentialKind::TransientRolling;
+}
+
+PatchKinematics patch_kinematics(const model::WheelRailProblem& p, const WheelsetPose& pose,
+                                 const PlacedProfiles& prof, const ContactFrame& f, double pen_mm) {
+  return p.roller.enabled ? roller_kinematics(p, pose, prof, f, pen_mm)
+                          : track_kinematics(p, pose, prof, f, pen_mm);
+}
+
 PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                        const WheelsetPose& pose, const ContactRegion& region,
-                       std::vector<std::string>& warnings) {
+                       std::vector<std::string>& warnings, const SuperGridBox* previous_contact) {
   PatchSetup s;
   s.frame = contact_frame(region);
   // Lateral extent: the region's rail arc length around the reference point.
   const double y_r = prof.rail_y_mm();
   const double s_ref = prof.rail().at_y(region.reference.y - y_r).s;
-  const double s_lo = prof.rail().at_y(region.y_min - y_r).s - s_ref;
-  const double s_hi = prof.rail().at_y(region.y_max - y_r).s - s_ref;
+  double s_lo = prof.rail().at_y(region.y_min - y_r).s - s_ref;
+  double s_hi = prof.rail().at_y(region.y_max - y_r).s - s_ref;
   double x_lo = region.x_min - region.reference.x, x_hi = region.x_max - region.reference.x;
+  if (s_lo > s_hi) std::swap(s_lo, s_hi);
+  if (on_super_grid(p)) {
+    // The super grid (wheelrail-advanced.md §5.2): x in the track frame that moves with the
+    // wheelset (T=2) or in the world (T=1: S_WS + x), y the rail arc length; the grid covers the
+    // continued patch's previous contact area too, so no traction of it is lost.
+    s.origin_x_mm = (is_shift(p) ? p.motion.s_mm : 0.0) + region.reference.x;
+    s.origin_y_mm = s_ref;
+    // Continued when the previous contact area overlaps this region (bounding boxes).
+    s.continued = previous_contact != nullptr && previous_contact->x_lo <= x_hi + s.origin_x_mm &&
+                  previous_contact->x_hi >= x_lo + s.origin_x_mm &&
+                  previous_contact->y_lo <= s_hi + s.origin_y_mm &&
+                  previous_contact->y_hi >= s_lo + s.origin_y_mm;
+    if (s.continued) {
+      x_lo = std::min(x_lo, previous_contact->x_lo - s.origin_x_mm);
+      x_hi = std::max(x_hi, previous_contact->x_hi - s.origin_x_mm);
+      s_lo = std::min(s_lo, previous_contact->y_lo - s.origin_y_mm);
+      s_hi = std::max(s_hi, previous_contact->y_hi - s.origin_y_mm);
+    }
+  }
   model::PatchProblem& q = s.problem;
   for (int widening = 0;; ++widening) {
-    const auto [mx, my] = size_grid(p, x_lo, x_hi, s_lo, s_hi, s, warnings);
+    const auto [mx, my] = size_grid(p, x_lo + s.origin_x_mm, x_hi + s.origin_x_mm,
+                                    s_lo + s.origin_y_mm, s_hi + s.origin_y_mm, s, warnings);
     q = p.patch;
     q.potential = {};
     q.potential.ipotcn = 1;
     q.potential.mx = mx;
     q.potential.my = my;
-    q.potential.values = {(s.ix0 - 0.5) * s.dx_mm, (s.iy0 - 0.5) * s.ds_mm, s.dx_mm, s.ds_mm};
+    q.potential.values = {(s.ix0 - 0.5) * s.dx_mm - s.origin_x_mm,
+                          (s.iy0 - 0.5) * s.ds_mm - s.origin_y_mm, s.dx_mm, s.ds_mm};
     q.gap = {};
     q.gap.ibase = 9;
     q.gap.iplan = 1;
@@ -272,6 +321,8 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
   q.rolling.direction_rad = s.kinematics.chi_rad;
   q.rolling.step_mm = s.kinematics.dq_mm;
   q.rolling.velocity_mm_per_s = s.kinematics.veloc_mm_s;
+  q.sequence.origin_x_mm = s.origin_x_mm;
+  q.sequence.origin_y_mm = s.origin_y_mm;
   return s;
 }
 

@@ -30,19 +30,39 @@ PatchKinematics patch_kinematics(const model::WheelRailProblem& problem, const W
                                  const PlacedProfiles& profiles, const ContactFrame& frame,
                                  double pen_mm);
 
+/// A rectangle of a sequence's super grid [mm]: x along the track frame (T=1: the world),
+/// y the rail arc length.
+struct SuperGridBox {
+  double x_lo = 0.0, x_hi = 0.0, y_lo = 0.0, y_hi = 0.0;
+};
+
 struct PatchSetup {
   ContactFrame frame;
   double dx_mm = 0.0, ds_mm = 0.0;  ///< element sizes in effect (doubled for NPOT_MAX)
-  int ix0 = 0, iy0 = 0;             ///< index of the first element centre (x = ix·dx)
-  double pen_mm = 0.0;              ///< approach: −min h
+  /// The grid's origin (the reference point) on the super grid of a transient sequence (T=1, 2;
+  /// spec/wheelrail-advanced.md §5.2): element centres lie at multiples of (DX, DS) there, at
+  /// local x = ix·dx − origin_x. 0, 0 otherwise (centres at multiples from the reference).
+  double origin_x_mm = 0.0, origin_y_mm = 0.0;
+  int ix0 = 0, iy0 = 0;  ///< super-grid index of the first element centre (X = ix·dx)
+  /// Super grid: the patch continues the previous case's patch given to setup_patch (their
+  /// areas overlap; wheelrail-advanced.md §5.3), and its grid covers that one's contact.
+  bool continued = false;
+  double pen_mm = 0.0;  ///< approach: −min h
   PatchKinematics kinematics;
   model::PatchProblem problem;  ///< ready for PatchSolver::solve
 };
 
+/// True for the tangential problems whose patches live on a super grid (T=1 shifts, T=2
+/// transient rolling).
+bool on_super_grid(const model::WheelRailProblem& problem);
+
 /// Builds the patch problem of `region`; the grid is coarsened (DX, DS doubled) until it has
-/// fewer than NPOT_MAX elements. `warnings` receives such adjustments.
+/// fewer than NPOT_MAX elements (not on a super grid). `warnings` receives such adjustments.
+/// `previous_contact` (super grid only): the continued patch's contact area in the previous
+/// case, which the grid is enlarged to cover.
 PatchSetup setup_patch(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
                        const WheelsetPose& pose, const ContactRegion& region,
-                       std::vector<std::string>& warnings);
+                       std::vector<std::string>& warnings,
+                       const SuperGridBox* previous_contact = nullptr);
 
 }  // namespace rollcontact::wheelrail

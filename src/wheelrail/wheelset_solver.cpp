@@ -105,6 +105,21 @@ struct WheelsetSolver::Impl {
   RailKey rail_key;
   unsigned long profiles_generation = 0;  ///< counts the profile curves made
 
+  /// Transient sequences (T=1, 2; spec/wheelrail-advanced.md §5.2–5.3): what the last complete
+  /// solve of a case would leave for the next case, per patch position — committed when the
+  /// case is done (commit_transient), since the force iterations' trial solves must all start
+  /// from the previous case.
+  struct PatchState {
+    Solution solution;
+    double origin_x = 0.0, origin_y = 0.0;  ///< the grid's origin on the super grid [mm]
+    wheelrail::SuperGridBox contact;        ///< its contact area on the super grid
+  };
+  std::vector<PatchState> pending;
+  /// The previous case's contact area per patch position (super grid): the patches of the next
+  /// case that overlap it continue its sequence.
+  std::vector<std::optional<wheelrail::SuperGridBox>> previous_contact;
+  void commit_transient();
+
   /// The last complete solve had patches whose angles the D_TURN rule turned (validated_only
   /// refuses its result: docs/decisions.md, "Variable friction (V=1, 2) and the D_TURN rule").
   bool last_solve_turned = false;
@@ -245,6 +260,19 @@ void mirror_to_left(WheelRailSolution& s) {
   }
 }
 
+/// The contact area of a patch's solution on the super grid (its elements with pressure).
+wheelrail::SuperGridBox contact_box(const Solution& s, const PatchSetup& setup) {
+  wheelrail::SuperGridBox b{1e300, -1e300, 1e300, -1e300};
+  for (int iy = 0; iy < s.grid.my; ++iy)
+    for (int ix = 0; ix < s.grid.mx; ++ix) {
+      if (s.pn.empty() || !(s.pn[s.grid.index(ix, iy)] > 0.0)) continue;
+      const double x = s.grid.x_centre(ix) + setup.origin_x_mm;
+      const double y = s.grid.y_centre(iy) + setup.origin_y_mm;
+      b = {std::min(b.x_lo, x), std::max(b.x_hi, x), std::min(b.y_lo, y), std::max(b.y_hi, y)};
+    }
+  return b;
+}
+
 /// Linear theory's d(F_x/F_z)/dVPITCH [s/rad] (spec-additions §A6): Σ G·a·b·C11·r/|V| over the
 /// patches (a, b the equivalent ellipse of each patch's contact, G and ν its combined constants),
 /// r the distance of the contact point below the axle, over F_z.
@@ -285,8 +313,14 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   }
   Vec3 total_tr{}, total_ws{}, moment_tr{}, moment_ws{};
   describe_markers(p, prof, pose, out);
+  const bool transient = wheelrail::on_super_grid(p);
+  if (transient && !normal_only) pending.clear();
   for (std::size_t k = 0; k < search.patches.size(); ++k) {
-    PatchSetup setup = wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings);
+    const wheelrail::SuperGridBox* before =
+        transient && k < previous_contact.size() && previous_contact[k] ? &*previous_contact[k]
+                                                                        : nullptr;
+    PatchSetup setup =
+        wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings, before);
     if (p.friction_variation.along != model::FrictionVariation::Along::None) {
       // V=1: the rail surface inclination at the reference point (of the right-wheel
       // computation); V=2: the contact's place along the track.
@@ -299,9 +333,18 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
     // Steady rolling: the previous solve of this patch position (the last iterate, the last
     // case) is the start of the iterations; a normal-only estimate does not replace it.
     model::SequenceLink& link = setup.problem.sequence;
-    link.continue_previous = setup.problem.tangential.kind == model::TangentialKind::SteadyRolling;
-    link.normal_from_previous = link.continue_previous;
-    link.becomes_previous = !normal_only;
+    if (transient) {
+      // The previous case's tractions (P = 0, 1) on the super grid, for every trial solve of
+      // the case; the case's result becomes the previous one when it is done.
+      link.continue_previous = p.patch.sequence.continue_previous && setup.continued;
+      link.normal_from_previous = false;
+      link.becomes_previous = false;
+    } else {
+      link.continue_previous =
+          setup.problem.tangential.kind == model::TangentialKind::SteadyRolling;
+      link.normal_from_previous = link.continue_previous;
+      link.becomes_previous = !normal_only;
+    }
     if (normal_only) setup.problem.tangential.kind = model::TangentialKind::None;
     // Subsurface stresses of the final patches only (WheelsetSolver::solve), not of every
     // iterate of the force iterations: they cost more than the contact problem itself.
@@ -321,6 +364,8 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
       out.converged = false;
       out.message = fmt::format("patch {}: {}", k + 1, sol.solver.message);
     }
+    if (transient && !normal_only)
+      pending.push_back({sol, setup.origin_x_mm, setup.origin_y_mm, contact_box(sol, setup)});
     WheelRailPatch w = describe_patch(p, prof, pose, setup, std::move(sol));
     w.friction = setup.problem.friction;
     total_tr = total_tr + Vec3{w.force_tr.x, w.force_tr.y, w.force_tr.z};
@@ -335,6 +380,22 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   out.moment_ws = to_public(moment_ws);
   geometry_seconds += since(start);
   return out;
+}
+
+void WheelsetSolver::Impl::commit_transient() {
+  // Patch positions of this case become the previous ones; the others end their sequence.
+  for (std::size_t k = 0; k < std::max(pending.size(), previous_contact.size()); ++k) {
+    PatchSolver& solver = solver_for(k);
+    if (k < pending.size() && pending[k].contact.x_lo <= pending[k].contact.x_hi) {
+      solver.set_previous(std::move(pending[k].solution), pending[k].origin_x, pending[k].origin_y);
+      if (previous_contact.size() <= k) previous_contact.resize(k + 1);
+      previous_contact[k] = pending[k].contact;
+    } else {
+      solver.reset_sequence();
+      if (k < previous_contact.size()) previous_contact[k].reset();
+    }
+  }
+  pending.clear();
 }
 
 WheelsetSolver::WheelsetSolver(SolveOptions options) : impl_(std::make_unique<Impl>()) {
@@ -690,6 +751,10 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
     // contact; z_ws = 0 and no forces, nothing solved. An MBS code lifting a wheel gets this.
     WheelRailSolution none;
     none.vpitch_rad_s = problem.motion.vpitch_rad_s;
+    if (wheelrail::on_super_grid(problem)) {  // no contact: the patches' sequences end
+      impl_->pending.clear();
+      impl_->commit_transient();
+    }
     none.warnings.push_back(fmt::format(
         "FZ = {:g} N < 1e-9 N: no contact computed (z_ws = 0, zero forces)", problem.motion.fz_N));
     return none;
@@ -698,6 +763,7 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
                                  ? impl_->solve_pitch_velocity(problem)
                              : problem.massless_rail.enabled ? impl_->solve_massless_rail(problem)
                                                              : impl_->solve_placed(problem, {});
+  if (wheelrail::on_super_grid(problem)) impl_->commit_transient();
   if (problem.validated_only && impl_->last_solve_turned)
     throw NotSupportedError(
         "not supported yet: module 1 patches between D_SEP and D_TURN (their reference angles "

@@ -30,6 +30,11 @@ struct SequenceLink {
   /// this grid) instead of the coarse-grid estimate — the start, not the answer. The wheel/rail
   /// solver sets it for the iterates and cases of one patch position.
   bool normal_from_previous = false;
+  /// Where this problem's grid coordinates (0, 0) lie in a frame the grids of the sequence share
+  /// [mm] (module 1's super grid: x along the track, y the rail arc length). The previous
+  /// solution's fields are mapped onto this grid by the difference of the two origins (with the
+  /// element offsets as before); 0, 0 for grids that share their coordinates (module 3).
+  double origin_x_mm = 0.0, origin_y_mm = 0.0;
 };
 
 struct PatchProblem {

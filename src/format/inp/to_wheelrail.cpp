@@ -72,7 +72,6 @@ void check_supported(const WheelRailRecord& r) {
   const ControlDigits& d = r.digits;
   if (r.discretisation.method != 2)
     not_supported(fmt::format("contact search D={}", r.discretisation.method));
-  if (d.t == 1 || d.t == 2) not_supported(fmt::format("transient rolling or shifts T={}", d.t));
   // F=1 (FX_WS prescribed, VPITCH solved) and F=3 (massless rail) are solved; F=2 (MY_WS
   // prescribed, experimental in CONTACT and not in the spec) is not.
   if (d.f == 2) not_supported("prescribed wheelset moment F=2 (experimental in CONTACT)");

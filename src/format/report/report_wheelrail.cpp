@@ -70,7 +70,11 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
                        d.h, d.g, d.i, d.a, d.o, d.w, d.r));
   line(os, std::string(" VERTICAL PROBLEM WITH PRESCRIBED ") +
                (d.n == 1 ? "VERTICAL FORCE" : "POSITION") + ", FULL SOLUTION");
-  if (d.t == 3) line(os, " STEADY STATE ROLLING, CREEPAGE PRESCRIBED");
+  if (d.t >= 1)  // module 1's creepages come from the kinematics
+    line(os, std::string(d.t == 1   ? " SHIFT TRANSIENT"
+                         : d.t == 2 ? " TRANSIENT ROLLING"
+                                    : " STEADY STATE ROLLING") +
+                 ", CREEPAGE PRESCRIBED");
   line(os, "");
   line(os, " DISCRETISATION PARAMETERS");
   line(os, "     DX          DS          DQREL       A_SEP       D_SEP       D_COMB");
