@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <utility>
 
@@ -17,10 +18,12 @@ namespace {
 constexpr double kFarAway = 1e3;
 
 /// Undeformed distance per element along the local normal (ix fastest), minimum shifted to 0.
+/// `rail_n`: the rail surface's normal coordinate per element [mm] (NaN where there is none).
 std::vector<double> undeformed_distance(const PlacedProfiles& prof, const WheelsetPose& pose,
                                         const ContactFrame& f, const PatchSetup& s, int mx, int my,
-                                        double& pen) {
+                                        double& pen, std::vector<double>& rail_n) {
   std::vector<double> h(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my), kFarAway);
+  rail_n.assign(h.size(), std::numeric_limits<double>::quiet_NaN());
   double h_min = kFarAway;
   for (int j = 0; j < my; ++j) {
     const Vec3 on_line = f.origin + (s.ds_mm * (s.iy0 + j) - s.origin_y_mm) * f.es;
@@ -39,8 +42,10 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
         continue;
       }
       const double v = t_rail_here - t_wheel;
-      h[static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i)] =
-          v;
+      const std::size_t e =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
+      h[e] = v;
+      rail_n[e] = t_rail_here;
       h_min = std::min(h_min, v);
     }
   }
@@ -48,6 +53,35 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
   for (double& v : h)
     if (v < kFarAway) v -= h_min;
   return h;
+}
+
+/// Release 25.1's check of the planar approach (wheelrail-advanced.md §6.1): where the rail
+/// surface between two lateral neighbours deep in the interpenetration (more than 0.04 mm
+/// before the approach is split off) is inclined more than 13.9° to the patch plane, the planar
+/// gap is more than 3 % off. Returns the warning, or an empty string.
+std::string angle_variation_warning(const std::vector<double>& h, const std::vector<double>& rail_n,
+                                    double pen, int mx, int my, double ds) {
+  constexpr double kDeep = -0.04, kMinTangent = 1.0 / 1.03;
+  int pairs = 0;
+  double t_min = 1.0;
+  for (int j = 0; j + 1 < my; ++j)
+    for (int i = 0; i < mx; ++i) {
+      const std::size_t a =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
+      const std::size_t b = a + static_cast<std::size_t>(mx);
+      if (!(h[a] - pen < kDeep && h[b] - pen < kDeep)) continue;
+      const double dn = rail_n[b] - rail_n[a];
+      const double t_s = ds / std::hypot(ds, dn);
+      if (!(t_s < kMinTangent)) continue;
+      ++pairs;
+      t_min = std::min(t_min, t_s);
+    }
+  if (pairs == 0) return {};
+  return fmt::format(
+      "large angle variation within contact patch, ignored in the planar contact approach: {} "
+      "element pairs where the rail is inclined up to {:.1f} deg to the patch plane (gap error up "
+      "to {:.0f} %); conformal contact (D=4) accounts for it",
+      pairs, std::acos(t_min) * 180.0 / std::numbers::pi, 100.0 * (1.0 / t_min - 1.0));
 }
 
 /// Regions combined at a distance between D_COMB and D_SEP: IPLAN=4 rectangles, one lateral
@@ -290,6 +324,7 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
     }
   }
   model::PatchProblem& q = s.problem;
+  std::vector<double> rail_n;  // the rail surface per element, for the angle-variation check
   for (int widening = 0;; ++widening) {
     const auto [mx, my] = size_grid(p, x_lo + s.origin_x_mm, x_hi + s.origin_x_mm,
                                     s_lo + s.origin_y_mm, s_hi + s.origin_y_mm, s, warnings);
@@ -303,7 +338,7 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
     q.gap = {};
     q.gap.ibase = 9;
     q.gap.iplan = 1;
-    q.gap.values = undeformed_distance(prof, pose, s.frame, s, mx, my, s.pen_mm);
+    q.gap.values = undeformed_distance(prof, pose, s.frame, s, mx, my, s.pen_mm, rail_n);
     // The region's length comes from the round wheel's curvature; a sliced wheel can be flatter
     // along x (a worn flat) and interpenetrate up to the grid's ends: lengthen it then.
     if (prof.wheel_surface() == nullptr || widening == 4 ||
@@ -313,6 +348,9 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
     x_lo -= grow;
     x_hi += grow;
   }
+  const std::string angles = angle_variation_warning(q.gap.values, rail_n, s.pen_mm, q.potential.mx,
+                                                     q.potential.my, s.ds_mm);
+  if (!angles.empty()) warnings.push_back(angles);
   set_attenuated_parts(prof, region, s.frame, q.gap);
   q.normal.kind = model::NormalLoadKind::Approach;
   q.normal.approach_mm = s.pen_mm;

@@ -481,7 +481,8 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
     pen = 0.01;
   }
   wheelrail::VerticalForceSettings settings = st;
-  double z1 = z0 + pen / cos_min;
+  // Never from loss of contact (release 25.1, wheelrail-advanced.md §6.3): at least 1 µm in.
+  double z1 = std::max(z0 + pen / cos_min, z0 + 1e-3);
   if (k > 0.0) {
     // The massless rail with z_ws prescribed: the Hertz force C·pen^1.5 (C from 10 kN) against
     // the spring, C·((z − z0)·cos)^1.5 + k·z = target, by bisection between the start of
