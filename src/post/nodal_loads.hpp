@@ -22,6 +22,9 @@ class NodalLoads {
   /// Corner sums at (x, y) and depth z > 0 [mm].
   CornerSums sums(double x, double y, double z) const;
 
+  /// Number of loaded nodes (the direct sum's cost per point).
+  std::size_t node_count() const noexcept { return nodes_.size(); }
+
   /// Depth used for a requested depth z ≥ 0 (surface points slightly below the surface).
   double effective_depth(double z) const noexcept { return z > min_depth_ ? z : min_depth_; }
 
