@@ -96,15 +96,8 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
   }
 }
 
-/// Weight of one gap sample (GAPWGT = 0: ∫ g² dx over the interpenetrated length).
-double sample_weight(double pen, double c) {
-  const double t0 = std::sqrt(pen / c);
-  return 2.0 * pen * pen * t0 - (4.0 / 3.0) * pen * c * t0 * t0 * t0 +
-         0.4 * c * c * std::pow(t0, 5);
-}
-
 ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std::size_t first,
-                          std::size_t last, double c) {
+                          std::size_t last, double c, bool linear_weights) {
   ContactRegion r;
   r.first = first;
   r.last = last;
@@ -114,7 +107,7 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
   for (std::size_t j = first; j <= last; ++j) {
     const double pen = -g.gap[j];
     if (!(pen > 0.0)) continue;
-    const double w = sample_weight(pen, c);
+    const double w = gap_sample_weight(pen, c, linear_weights);
     r.weight += w;
     r.wx += w * g.x_locus[j];
     r.wy += w * g.y(j);
@@ -249,6 +242,14 @@ void turn_neighbour_angles(std::vector<ContactRegion>& patches,
 
 }  // namespace
 
+double gap_sample_weight(double pen_mm, double c_per_mm, bool linear) {
+  // The gap along x at a sample, g(x) = c·x² − pen, interpenetrates on |x| < t0 = √(pen/c).
+  const double t0 = std::sqrt(pen_mm / c_per_mm);
+  if (linear) return 2.0 * pen_mm * t0 - (2.0 / 3.0) * c_per_mm * t0 * t0 * t0;  // ∫ −g dx
+  return 2.0 * pen_mm * pen_mm * t0 - (4.0 / 3.0) * pen_mm * c_per_mm * t0 * t0 * t0 +
+         0.4 * c_per_mm * c_per_mm * std::pow(t0, 5);  // ∫ g² dx
+}
+
 double rolling_curvature_per_mm(const model::WheelRailProblem& p) {
   double c = 1.0 / (2.0 * p.wheelset.nominal_radius_mm);
   if (p.roller.enabled) c += 1.0 / (2.0 * p.roller.nominal_radius_mm);
@@ -323,7 +324,8 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
     }
     std::size_t e = j;
     while (e + 1 < n && g.gap[e + 1] < 0.0) ++e;
-    regions.push_back(make_region(g, prof, j > 0 ? j - 1 : j, e + 1 < n ? e + 1 : e, c));
+    regions.push_back(make_region(g, prof, j > 0 ? j - 1 : j, e + 1 < n ? e + 1 : e, c,
+                                  p.search.linear_gap_weights));
     j = e + 1;
   }
   res.patches = combine(std::move(regions), p.search);

@@ -69,6 +69,11 @@ struct GapSamples {
   std::vector<double> rail_drop;
 };
 
+/// Weight of one interpenetrating gap sample of depth pen [mm] with the rolling curvature c
+/// [1/mm] (the gap along x is c·x² − pen): ∫ g² dx (GAPWGT = 0) or ∫ −g dx (GAPWGT = 1) over
+/// the interpenetrated length (spec/physics.md §13.3 step 4).
+double gap_sample_weight(double pen_mm, double c_per_mm, bool linear);
+
 /// The combined curvature of the two surfaces along the rolling direction, 1/(2·NOMRADW) (+
 /// 1/(2·NOMRADR) on a roller rig; an internal roller's negative radius lowers it) [1/mm]: the
 /// weights of the reference point and the patch's length.

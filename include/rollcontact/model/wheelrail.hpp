@@ -51,8 +51,14 @@ struct ContactSearchSettings {
   double d_sep_mm = 8.0;                    ///< distance above which patches are separate
   double d_comb_mm = 4.0;                   ///< distance below which patches are combined
   double d_turn_mm = 12.0;                  ///< distance above which patches are independent
-  double g_miss_mm = -1.0;                  ///< near misses kept below this gap (< 0: none)
-  int max_elements = 20000;                 ///< NPOT_MAX: larger grids are coarsened (dx, ds ×2)
+  /// G_MISS: CONTACT keeps near misses below this gap as tentative patches for its force
+  /// iteration's predictions; they carry no force, and the Brent iteration here needs no
+  /// prediction, so they are accepted and not reported (docs/decisions.md).
+  double g_miss_mm = -1.0;
+  int max_elements = 20000;  ///< NPOT_MAX: larger grids are coarsened (dx, ds ×2)
+  /// GAPWGT: how the reference point weighs the gap samples, by ∫g² dx over the interpenetrated
+  /// length (false, CONTACT's default) or ∫g dx (true; spec/physics.md §13.3 step 4).
+  bool linear_gap_weights = false;
 };
 
 /// Track and rail position (Z=1,3). On a roller rig the same placement positions the roller

@@ -92,8 +92,6 @@ void check_supported(const WheelRailRecord& r) {
         "the flat)");
   if (r.rail.smooth > 0 && r.rail.ismooth == 2) not_supported("ISMOOTH=2 (rail profile)");
   if (r.wheel.smooth > 0 && r.wheel.ismooth == 2) not_supported("ISMOOTH=2 (wheel profile)");
-  if (d.gapwgt != 0) not_supported(fmt::format("GAPWGT={}", d.gapwgt));
-  if (r.discretisation.g_miss > 0) not_supported("near misses (G_MISS > 0)");
   // Patches could compute surface temperatures (module 3 does), but the wheel/rail reports do not
   // print them and no module-1 reference has them yet.
   if (d.h != 0) not_supported(fmt::format("temperature H={} (not yet validated)", d.h));
@@ -139,8 +137,8 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
     p.massless_rail = {true, mr.ky, mr.fy, mr.kz, mr.fz, mr.dystep0};
   }
   const WheelRailDiscretisation& ds = r.discretisation;
-  p.search = {ds.dx,     ds.ds,     ds.dqrel,  ds.a_sep,  ds.d_sep,
-              ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max};
+  p.search = {ds.dx,     ds.ds,     ds.dqrel,  ds.a_sep,   ds.d_sep,
+              ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max, r.digits.gapwgt == 1};
   p.first_of_sequence = r.case_number == 1;
   p.validated_only = true;
   const VariableFriction& vf = r.variable_friction;

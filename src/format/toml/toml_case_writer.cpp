@@ -562,6 +562,7 @@ class WheelRailWriter {
     line("combination_mm", real(ds.d_comb));
     line("turning_mm", real(ds.d_turn));
     line("near_miss_mm", real(ds.g_miss));
+    if (r_.digits.gapwgt == 1) line("gap_weights", "\"linear\"");
     line("max_elements", fmt::format("{}", r_.npot_max));
     const TrackDimensions& t = r_.track;
     table("case.wheel_rail.track");

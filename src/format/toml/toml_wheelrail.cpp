@@ -27,6 +27,7 @@ constexpr std::array<schema::Choice, 4> side_choices{
     {{0, "left"}, {1, "right"}, {4, "left_roller"}, {5, "right_roller"}}};
 constexpr std::array<schema::Choice, 3> search_choices{
     {{2, "locus"}, {4, "conformal"}, {5, "brute_force"}}};
+constexpr std::array<schema::Choice, 2> gap_weight_choices{{{0, "squared"}, {1, "linear"}}};
 constexpr std::array<schema::Choice, 3> mirror_z_choices{{{0, "auto"}, {-1, "no"}, {1, "yes"}}};
 constexpr std::array<schema::Choice, 3> smoothing_choices{
     {{0, "spline"}, {1, "weighted_spline"}, {2, "weighted_bspline"}}};
@@ -102,6 +103,7 @@ void read_discretisation(Table& w, WheelRailRecord& r) {
   if (d.d_comb > d.d_sep) t.fail_key("combination_mm", "must not exceed separation_mm");
   d.d_turn = t.real_or("turning_mm", 2.0 * d.d_sep - d.d_comb);
   d.g_miss = t.real_or("near_miss_mm", -1.0);
+  r.digits.gapwgt = t.choice_or("gap_weights", gap_weight_choices, 0);
   r.npot_max = t.integer_in("max_elements", r.npot_max, 100, 1000000);
   t.finish();
 }

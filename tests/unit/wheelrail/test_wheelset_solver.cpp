@@ -9,6 +9,7 @@
 
 #include "geometry/hertz.hpp"
 #include "rollcontact/wheelrail.hpp"
+#include "wheelrail/contact_search.hpp"
 #include "wheelrail/placed_profiles.hpp"
 #include "wheelrail_problems.hpp"
 
@@ -175,6 +176,37 @@ TEST(WheelsetSolver, WithoutLoadNoContactIsComputed) {
     ASSERT_EQ(s.warnings.size(), 1U);
     EXPECT_NE(s.warnings[0].find("no contact computed"), std::string::npos);
   }
+}
+
+TEST(ContactSearch, GapWeightsAreIntegralsOfTheGapAlongX) {
+  // A sample of depth pen sees the gap c·x² − pen along x: GAPWGT = 0 weighs it by ∫ g² dx,
+  // GAPWGT = 1 by ∫ −g dx over the interpenetrated length (midpoint rule, 2e5 intervals).
+  const double pen = 0.05, c = 1.0 / (2.0 * 460.0);
+  const double t0 = std::sqrt(pen / c);
+  const int n = 200000;
+  double squared = 0.0, linear = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double x = -t0 + (i + 0.5) * 2.0 * t0 / n, g = c * x * x - pen;
+    squared += g * g * 2.0 * t0 / n;
+    linear += -g * 2.0 * t0 / n;
+  }
+  EXPECT_NEAR(wheelrail::gap_sample_weight(pen, c, false), squared, 1e-8 * squared);
+  EXPECT_NEAR(wheelrail::gap_sample_weight(pen, c, true), linear, 1e-8 * linear);
+  EXPECT_NEAR(wheelrail::gap_sample_weight(pen, c, true), 4.0 / 3.0 * pen * t0, 1e-12);
+}
+
+TEST(ContactSearch, LinearGapWeightsKeepASymmetricContact) {
+  // On the crown under a cylinder the gap is symmetric: either weighting puts the reference on
+  // the crown (GAPWGT only matters for skewed regions), and FZ balances.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 10000.0;
+  p.search.linear_gap_weights = true;
+  const WheelRailSolution s = WheelsetSolver().solve(p);
+  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_EQ(s.patches.size(), 1u);
+  EXPECT_NEAR(s.patches[0].reference_tr.y, 750.0, 1e-6);
+  EXPECT_NEAR(s.force_tr.z, 10000.0, 10000.0 * 1e-6 * 1.01);
 }
 
 }  // namespace
