@@ -96,6 +96,77 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
   }
 }
 
+/// D=5 (spec-additions §A2): at every lateral sample the vertical gap between rail and wheel,
+/// z_rail(x, y) − z_wheel(x, y), minimised along x — the gap grid's minimum without the grid:
+/// golden sections in a 4 mm window around the locus's x (moved while the minimum lies at its
+/// end), then the parabola through the last three points. The wheel's height at (x, y) is where
+/// the vertical line meets its lower surface (out-of-round wheels included); this is exact where
+/// the locus interpolates between wheel-profile circles, and it does not assume that the wheel's
+/// lowest point lies in the view direction.
+void minimise_gap_along_x(const PlacedProfiles& prof, const WheelsetPose& pose, GapFunction& g,
+                          std::vector<double>& z_locus) {
+  for (std::size_t j = 0; j < g.gap.size(); ++j) {
+    if (z_locus[j] <= -kNoWheel) continue;
+    const double y = g.y(j);
+    const double t_start = z_locus[j];
+    // gap(x) = rail − wheel at this y; +huge where the vertical line misses either body.
+    const auto gap_at = [&](double x) {
+      const RailSurfacePoint r = prof.rail_surface_at(x, y);
+      double t = 0.0;
+      if (!r.found ||
+          !wheel_surface_along(prof, pose, Vec3{x, y, 0.0}, Vec3{0.0, 0.0, 1.0}, t_start, t))
+        return kNoWheel;
+      return r.z - t;
+    };
+    constexpr double kHalfWindow = 2.0;  // [mm]
+    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+    double centre = g.x_locus[j];
+    double a = 0.0, b = 0.0, c = 0.0, d = 0.0, fc = 0.0, fd = 0.0;
+    for (int shift = 0; shift < 10; ++shift) {
+      a = centre - kHalfWindow;
+      b = centre + kHalfWindow;
+      c = b - golden * (b - a);
+      d = a + golden * (b - a);
+      fc = gap_at(c);
+      fd = gap_at(d);
+      for (int it = 0; it < 24; ++it) {
+        if (fc <= fd) {
+          b = d;
+          d = c;
+          fd = fc;
+          c = b - golden * (b - a);
+          fc = gap_at(c);
+        } else {
+          a = c;
+          c = d;
+          fc = fd;
+          d = a + golden * (b - a);
+          fd = gap_at(d);
+        }
+      }
+      const double x = 0.5 * (a + b);
+      const bool at_end = std::abs(x - (centre - kHalfWindow)) < 1e-3 ||
+                          std::abs(x - (centre + kHalfWindow)) < 1e-3;
+      if (!at_end) break;
+      centre = x;  // the minimum lies beyond the window: move it
+    }
+    // The parabola through c, (c+d)/2, d refines the bracket's minimum.
+    const double m = 0.5 * (c + d), fm = gap_at(m), h = 0.5 * (d - c);
+    const double curvature = fc - 2.0 * fm + fd;
+    double x = m;
+    if (curvature > 0.0 && h > 0.0) x = m - 0.5 * h * (fd - fc) / curvature;
+    double f = gap_at(x);
+    if (!(f <= fm)) {
+      x = m;
+      f = fm;
+    }
+    if (!(f < 0.5 * kNoWheel)) continue;
+    // The wheel's height there (at z_ws = 0) is the locus point: rail − gap.
+    g.x_locus[j] = x;
+    z_locus[j] = prof.rail_surface_at(x, y).z - f;
+  }
+}
+
 ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std::size_t first,
                           std::size_t last, double c, bool linear_weights) {
   ContactRegion r;
@@ -278,6 +349,8 @@ GapSamples sample_rail(const model::WheelRailProblem& p, const PlacedProfiles& p
 void sample_wheel(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                   const WheelsetPose& pose_at_zero, GapSamples& s) {
   fill_locus(p, prof, pose_at_zero, s.base, s.locus_z);
+  if (p.search.method == model::ContactSearch::GapGrid)
+    minimise_gap_along_x(prof, pose_at_zero, s.base, s.locus_z);
   s.rail_drop.clear();
   if (!prof.rail_varies_along_x()) return;
   // The rail's surface under the locus where it differs from its section at x = 0: a roller's

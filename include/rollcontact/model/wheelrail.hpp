@@ -42,6 +42,12 @@ struct WheelRailProfile {
   SlicedProfile slices;  ///< `points` then holds the first slice
 };
 
+/// How the contact search finds the wheel's lowest points (CONTACT's D digit).
+enum class ContactSearch {
+  Locus,    ///< D=2: the contact locus, one point per wheel-profile circle (physics.md §13.3)
+  GapGrid,  ///< D=5: the vertical gap minimised along x at every lateral sample (§A2)
+};
+
 /// Contact search and patch grids (the D=2 line).
 struct ContactSearchSettings {
   double dx_mm = 0.2;                       ///< element size in rolling direction
@@ -59,6 +65,7 @@ struct ContactSearchSettings {
   /// GAPWGT: how the reference point weighs the gap samples, by ∫g² dx over the interpenetrated
   /// length (false, CONTACT's default) or ∫g dx (true; spec/physics.md §13.3 step 4).
   bool linear_gap_weights = false;
+  ContactSearch method = ContactSearch::Locus;
 };
 
 /// Track and rail position (Z=1,3). On a roller rig the same placement positions the roller

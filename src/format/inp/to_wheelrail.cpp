@@ -70,7 +70,7 @@ CaseRecord settings_record(const WheelRailRecord& r) {
 
 void check_supported(const WheelRailRecord& r) {
   const ControlDigits& d = r.digits;
-  if (r.discretisation.method != 2)
+  if (r.discretisation.method != 2 && r.discretisation.method != 5)
     not_supported(fmt::format("contact search D={}", r.discretisation.method));
   // F=1 (FX_WS prescribed, VPITCH solved) and F=3 (massless rail) are solved; F=2 (MY_WS
   // prescribed, experimental in CONTACT and not in the spec) is not.
@@ -139,6 +139,7 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   const WheelRailDiscretisation& ds = r.discretisation;
   p.search = {ds.dx,     ds.ds,     ds.dqrel,  ds.a_sep,   ds.d_sep,
               ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max, r.digits.gapwgt == 1};
+  if (ds.method == 5) p.search.method = model::ContactSearch::GapGrid;
   p.first_of_sequence = r.case_number == 1;
   p.validated_only = true;
   const VariableFriction& vf = r.variable_friction;
