@@ -92,9 +92,10 @@ void check_supported(const WheelRailRecord& r) {
         "the flat)");
   if (r.rail.smooth > 0 && r.rail.ismooth == 2) not_supported("ISMOOTH=2 (rail profile)");
   if (r.wheel.smooth > 0 && r.wheel.ismooth == 2) not_supported("ISMOOTH=2 (wheel profile)");
-  // Patches could compute surface temperatures (module 3 does), but the wheel/rail reports do not
-  // print them and no module-1 reference has them yet.
-  if (d.h != 0) not_supported(fmt::format("temperature H={} (not yet validated)", d.h));
+  // Flash temperatures per patch as in module 3 (spec/physics.md §15), steady rolling and
+  // static cases only, like module 3.
+  if (d.h != 0 && d.t != 0 && d.t != 3)
+    not_supported(fmt::format("temperature H={} with T={} (steady rolling only)", d.h, d.t));
 }
 
 model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {

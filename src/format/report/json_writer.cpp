@@ -117,6 +117,10 @@ nlohmann::json wheelrail_case_to_json(const CaseRecord& identity,
         {"statistics", {{"npot", s.npot}, {"ncon", s.ncon}, {"nadh", s.nadh}, {"nslip", s.nslip}}},
         {"converged", w.solution.solver.converged},
     });
+    if (identity.digits.h >= 1) {  // flash temperatures of the patch [°C]
+      patches.back()["max_temp1"] = t.max_temp1;
+      patches.back()["max_temp2"] = t.max_temp2;
+    }
   }
   j["patches"] = std::move(patches);
   if (!solution.warnings.empty()) j["warnings"] = solution.warnings;

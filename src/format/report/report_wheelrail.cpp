@@ -147,12 +147,15 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
   line(os, "  " + sig(t.fn) + sig(filter_small(t.fx, noise)) + sig(filter_small(t.fy, noise)) +
                sig(filter_small(t.mz, noise)) + sig(t.elastic_energy) + sig(t.frictional_power));
   const double scale = t.fn * mu;
-  line(os, "     FN/G      FX/FSTAT/FN FS/FSTAT/FN   APPROACH     PMAX    ");
+  // H ≥ 1: the patch's highest surface temperature, as module 3 prints it.
+  line(os, std::string("     FN/G      FX/FSTAT/FN FS/FSTAT/FN   APPROACH     PMAX    ") +
+               (d.h >= 1 ? "  MAX(T1,T2)" : ""));
   const double g = w.solution.material.g;
   line(os, "  " + sig(g != 0 ? t.fn / g : 0.0) +
                sig(filter_small(scale != 0 ? t.fx / scale : 0.0, 0.5 * r.solver.eps)) +
                sig(filter_small(scale != 0 ? t.fy / scale : 0.0, 0.5 * r.solver.eps)) +
-               fmt_sig(12, 6, 4, t.pen) + sig(t.pmax));
+               fmt_sig(12, 6, 4, t.pen) + sig(t.pmax) +
+               (d.h >= 1 ? sig(std::max(t.max_temp1, t.max_temp2)) : ""));
   if (d.o >= 2) report::write_statistics(os, identity, w.solution);
   if (d.o >= 3) {
     line(os, "");
