@@ -366,4 +366,24 @@ void apply_shared_digit_rules(InpStream& in, ControlDigits& d, bool first, int p
   }
 }
 
+std::string contact_search_note(int d) {
+  switch (d) {
+    case 3:
+    case 7:
+    case 8:
+      return fmt::format(
+          "D={} (an experimental variant of CONTACT's planar contact search) is solved with the "
+          "contact locus of D=2: the reference point and creepages as in D=2",
+          d);
+    case 6:
+    case 9:
+      return fmt::format(
+          "D={} (a variant of CONTACT's gap grid for steep or oblique views) is solved with the "
+          "gap minimised along x of D=5, whose search window moves with the minimum",
+          d);
+    default:
+      return {};
+  }
+}
+
 }  // namespace rollcontact::format

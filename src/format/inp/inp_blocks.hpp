@@ -19,6 +19,10 @@ inline constexpr const char* kGdSteadyNote =
     "G=5 (GDsteady) is solved with rollcontact's steady-rolling solver (semismooth Newton); its "
     "parameter line is read and not used";
 
+/// The note a wheel/rail case gets for a contact-search digit that only chooses CONTACT's
+/// variant of the search (D = 3, 6, 7, 8, 9; empty for the others).
+std::string contact_search_note(int d);
+
 /// Iteration line `MAXGS MAXIN MAXNR MAXOUT EPS {NPOT_MAX}` and the G-specific line (G=2,3,4,5).
 /// Resets the G-specific parameters to their defaults first; sets solver.method = g. Returns
 /// NPOT_MAX when given (module 1 uses it, module 3 ignores it).

@@ -248,6 +248,8 @@ void read_discretisation(CaseContext& c) {
                                       "the discretisation line (DX DS DQREL A_SEP D_SEP D_COMB)");
   WheelRailDiscretisation ds;
   ds.method = d.d;
+  if (const std::string note = contact_search_note(d.d); !note.empty())
+    p.source.warnings.push_back(note);
   ds.dx = g.real(0);
   ds.ds = g.real(1);
   ds.dqrel = g.real(2);

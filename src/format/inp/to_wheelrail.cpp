@@ -70,8 +70,10 @@ CaseRecord settings_record(const WheelRailRecord& r) {
 
 void check_supported(const WheelRailRecord& r) {
   const ControlDigits& d = r.digits;
-  if (r.discretisation.method != 2 && r.discretisation.method != 5)
-    not_supported(fmt::format("contact search D={}", r.discretisation.method));
+  // D=4 (conformal contact) is other physics; D=3, 6-9 only choose CONTACT's search variant
+  // and are solved with D=2 or D=5 (contact_search_note()).
+  if (r.discretisation.method == 4)
+    not_supported(fmt::format("contact search D={} (conformal contact)", r.discretisation.method));
   // F=1 (FX_WS prescribed, VPITCH solved) and F=3 (massless rail) are solved; F=2 (MY_WS
   // prescribed, experimental in CONTACT and not in the spec) is not.
   if (d.f == 2) not_supported("prescribed wheelset moment F=2 (experimental in CONTACT)");
@@ -140,7 +142,8 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   const WheelRailDiscretisation& ds = r.discretisation;
   p.search = {ds.dx,     ds.ds,     ds.dqrel,  ds.a_sep,   ds.d_sep,
               ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max, r.digits.gapwgt == 1};
-  if (ds.method == 5) p.search.method = model::ContactSearch::GapGrid;
+  if (ds.method == 5 || ds.method == 6 || ds.method == 9)
+    p.search.method = model::ContactSearch::GapGrid;
   p.first_of_sequence = r.case_number == 1;
   p.validated_only = true;
   const VariableFriction& vf = r.variable_friction;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "format/inp/inp_reader.hpp"
+#include "format/inp/to_wheelrail.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -212,6 +213,23 @@ TEST(InpModule1, InternalRollerHasANegativeRadiusAndZeroIsRefused) {
   const auto [line, message] = input_error(roller_case("0.0"));
   EXPECT_EQ(line, 9);
   EXPECT_NE(message.find("NOMRADR = 0"), std::string::npos) << message;
+}
+
+TEST(InpModule1, SearchVariantsAreSolvedByTheirNeighboursWithANote) {
+  // D=6 and 9 (gap-grid variants) are solved as D=5, D=3, 7 and 8 (planar variants) as D=2,
+  // each with a note; D=4 (conformal contact) is other physics and refused.
+  for (const char* w2 : {"0062033", "0092033", "0032033", "0072033", "0082033"}) {
+    const auto cases = read(first_case("1203100", w2) + " 0 MODULE\n");
+    const format::WheelRailRecord& c = wr(cases, 0);
+    ASSERT_FALSE(c.source.warnings.empty()) << w2;
+    EXPECT_NE(c.source.warnings.back().find("is solved with"), std::string::npos) << w2;
+    const model::WheelRailProblem p = format::to_wheelrail_problem(c);
+    const bool grid = w2[2] == '6' || w2[2] == '9';
+    EXPECT_EQ(p.search.method, grid ? model::ContactSearch::GapGrid : model::ContactSearch::Locus)
+        << w2;
+  }
+  const auto conformal = read(first_case("1203100", "0042033") + " 0 MODULE\n");
+  EXPECT_THROW((void)format::to_wheelrail_problem(wr(conformal, 0)), NotSupportedError);
 }
 
 TEST(InpModule1, FxWsReplacesVpitchWithF1) {
