@@ -524,6 +524,10 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
     uy_prev = simplified::upstream_field(grid_, prev_.uy, c.chi, sol_.kinematics.dq);
     c.ux_prev = ux_prev;
     c.uy_prev = uy_prev;
+  } else if (kind == model::TangentialKind::Shift && prev_.present) {
+    // A shift moves no particles: each element starts from its own previous displacement.
+    c.ux_prev = prev_.ux;
+    c.uy_prev = prev_.uy;
   }
   simplified::SimplifiedOutcome r = simplified::solve_simplified(c);
   SimplifiedReport& rep = sol_.simplified;

@@ -158,8 +158,7 @@ void check_supported(const CaseRecord& record) {
       d.m == 4 && d.t == 2 && mp[2] > 0.0 && mp[3] != 0.0)
     not_supported(fmt::format("a hardening or softening layer (M=4, K_TAU = {}) in rolling T={}",
                               mp[3], d.t));
-  if ((d.m == 2 || d.m == 3 || d.m == 5) && d.t == 1)
-    not_supported(fmt::format("the simplified theory M={} with shifts T=1", d.m));
+  if (d.m == 5 && d.t == 1) not_supported("FaStrip M=5 with shifts T=1");
   if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
   // The coefficients in effect (C=0, 1 keep the previous case's).
   const int c = record.materials.influence_type;
