@@ -15,12 +15,12 @@ namespace {
 
 const std::string kExamples = "../shared/reference/contact-examples";
 
-bool set_up(int ire, double dx) {
+bool set_up(int ire, double dx, int iestim) {
   int icp = -1, imodul = 1, ifcver = 0, ierror = 0, one = 1;
   cntc_initialize(&ire, &imodul, &ifcver, &ierror, " ", &one);
-  int flags[] = {CNTC_ic_config, CNTC_ic_tang, CNTC_ic_norm};
-  int values[] = {1, 3, 1};
-  int nflags = 3;
+  int flags[] = {CNTC_ic_config, CNTC_ic_tang, CNTC_ic_norm, CNTC_ic_iestim};
+  int values[] = {1, 3, 1, iestim};
+  int nflags = 4;
   cntc_setflags(&ire, &icp, &nflags, flags, values);
   int m = 0, nmat = 4;
   double material[] = {0.28, 0.28, 82000.0, 82000.0};
@@ -49,10 +49,11 @@ bool set_up(int ire, double dx) {
   return true;
 }
 
+/// Arguments: 10·DX [mm]; IESTIM (1: each call starts from the previous one's solution).
 void BM_CntcWheelRailStep(benchmark::State& state) {
   const double dx = static_cast<double>(state.range(0)) / 10.0;
-  int ire = 1 + static_cast<int>(state.range(0)), icp = -1;
-  if (!set_up(ire, dx)) {
+  int ire = 1 + static_cast<int>(state.range(0)) + 10 * static_cast<int>(state.range(1)), icp = -1;
+  if (!set_up(ire, dx, static_cast<int>(state.range(1)))) {
     state.SkipWithError("CONTACT examples not found (run from the repository folder)");
     return;
   }
@@ -71,7 +72,13 @@ void BM_CntcWheelRailStep(benchmark::State& state) {
   state.counters["failures"] = failures;
   cntc_finalize(&ire);
 }
-BENCHMARK(BM_CntcWheelRailStep)->Arg(5)->Arg(2)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_CntcWheelRailStep)
+    ->Args({5, 0})
+    ->Args({5, 1})
+    ->Args({2, 0})
+    ->Args({2, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 
 }  // namespace
 

@@ -123,6 +123,9 @@ struct WheelsetSolver::Impl {
   /// The last complete solve had patches whose angles the D_TURN rule turned (validated_only
   /// refuses its result: docs/decisions.md, "Variable friction (V=1, 2) and the D_TURN rule").
   bool last_solve_turned = false;
+  /// The last converged vertical-force iteration: its approach z_ws − z_first-contact [mm] and
+  /// its force [N] (the start of the next with I ≥ 1).
+  double last_approach_mm = 0.0, last_fz_N = 0.0;
 
   /// Wall time of the current case [s] (see WheelRailSolution).
   double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
@@ -483,6 +486,12 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   wheelrail::VerticalForceSettings settings = st;
   // Never from loss of contact (release 25.1, wheelrail-advanced.md §6.3): at least 1 µm in.
   double z1 = std::max(z0 + pen / cos_min, z0 + 1e-3);
+  // I ≥ 1: from the previous case's approach beyond first contact, scaled by Hertz's F^(2/3)
+  // (wheelrail-advanced.md §6.3: not when the force changed by more than a factor 5).
+  if (p.estimate_from_previous_case && k <= 0.0 && last_approach_mm > 0.0 && last_fz_N > 0.0 &&
+      st.target_N > 0.0 && st.target_N < 5.0 * last_fz_N && last_fz_N < 5.0 * st.target_N)
+    z1 = std::max(z0 + last_approach_mm * std::cbrt(std::pow(st.target_N / last_fz_N, 2.0)),
+                  z0 + 1e-3);
   if (k > 0.0) {
     // The massless rail with z_ws prescribed: the Hertz force C·pen^1.5 (C from 10 kN) against
     // the spring, C·((z − z0)·cos)^1.5 + k·z = target, by bisection between the start of
@@ -527,6 +536,10 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
           ? wheelrail::solve_vertical_force(settings, z0, z1, full_at)
           : wheelrail::solve_vertical_force_split(settings, z0, z1, full_at, normal_at);
   result.trace = vf.trace;
+  if (vf.converged && k <= 0.0) {
+    last_approach_mm = vf.z_mm - z0;
+    last_fz_N = st.target_N;
+  }
   if (!vf.converged) {
     result.converged = false;
     result.message = vf.message;

@@ -198,6 +198,10 @@ struct WheelRailProblem {
   ContactSearchSettings search;
   /// The first case of a sequence: contact at a profile end is an error (misplaced wheel).
   bool first_of_sequence = true;
+  /// CONTACT's I ≥ 1: the vertical-force iteration starts from the previous case's approach
+  /// (scaled to this FZ) instead of a Hertz estimate — the start, not the answer; for time steps
+  /// of an MBS code, whose consecutive cases differ little.
+  bool estimate_from_previous_case = false;
   FrictionVariation friction_variation;  ///< V=1, 2; Along::None: patch.friction
   /// Refuse (NotSupportedError) the patches whose results are known to differ from CONTACT's
   /// (docs/decisions.md, "KPEC"): KPEC with interpenetration beyond the equivalent ellipse and

@@ -145,6 +145,7 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   if (ds.method == 5 || ds.method == 6 || ds.method == 9)
     p.search.method = model::ContactSearch::GapGrid;
   p.first_of_sequence = r.case_number == 1;
+  p.estimate_from_previous_case = r.digits.i >= 1;
   p.validated_only = true;
   const VariableFriction& vf = r.variable_friction;
   if (vf.v == 1 || vf.v == 2) {
