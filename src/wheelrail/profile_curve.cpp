@@ -74,7 +74,8 @@ void smoothing_of(const model::ProfileSmoothing& opt, const std::vector<double>&
     lambda = opt.smooth;
     return;
   }
-  // Weighted: half the neighbouring chord lengths, λ = (L_filt / 2π)^4.
+  // Weighted: half the neighbouring chord lengths, λ = (L_filt / 2π)^4 (ISMOOTH = 2, the
+  // third-order penalty: (L_filt / 2π)^6).
   const std::size_t n = s.size();
   weights.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -82,7 +83,7 @@ void smoothing_of(const model::ProfileSmoothing& opt, const std::vector<double>&
     const double hi = i + 1 < n ? s[i + 1] - s[i] : 0.0;
     weights[i] = std::max(0.5 * (lo + hi), 1e-9);
   }
-  lambda = std::pow(opt.smooth / (2.0 * std::numbers::pi), 4);
+  lambda = std::pow(opt.smooth / (2.0 * std::numbers::pi), opt.method == 2 ? 6 : 4);
 }
 
 }  // namespace
@@ -134,8 +135,15 @@ void ProfileCurve::build(std::vector<double> y, std::vector<double> z,
     std::vector<double> w;
     double lambda = 0.0;
     smoothing_of(opt, ss, w, lambda);
-    const SplineNodes fy = fit_smoothing_spline(ss, {y.begin() + b, y.begin() + e}, w, lambda);
-    const SplineNodes fz = fit_smoothing_spline(ss, {z.begin() + b, z.begin() + e}, w, lambda);
+    std::vector<double> ys(y.begin() + b, y.begin() + e), zs(z.begin() + b, z.begin() + e);
+    if (opt.method == 2 && lambda > 0.0) {
+      // ISMOOTH = 2: the third-order penalty smooths the values, a cubic interpolates them.
+      ys = smooth_third_order(ss, ys, w, lambda);
+      zs = smooth_third_order(ss, zs, w, lambda);
+      lambda = 0.0;
+    }
+    const SplineNodes fy = fit_smoothing_spline(ss, ys, w, lambda);
+    const SplineNodes fz = fit_smoothing_spline(ss, zs, w, lambda);
     if (!s_.empty()) segment_break_.back() = 1;  // the zero-length step onto the shared node
     section_start_.push_back(s_.size());
     for (std::size_t i = 0; i < ss.size(); ++i) {

@@ -1,5 +1,8 @@
 #include "wheelrail/smoothing_spline.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace rollcontact::wheelrail {
@@ -68,6 +71,57 @@ SplineNodes fit_smoothing_spline(const std::vector<double>& s, const std::vector
       for (int k = 0; k < 3; ++k) out.value[j + k] -= lambda * w_inv(j + k) * q(j, k) * g[j];
   }
   return out;
+}
+
+std::vector<double> smooth_third_order(const std::vector<double>& s, const std::vector<double>& f,
+                                       const std::vector<double>& weights, double lambda) {
+  const std::size_t n = s.size();
+  if (n < 4 || !(lambda > 0.0)) return f;
+  // D³ row j: coefficients of g_{j+k}, k = 0..3, in 3!·g[s_j, …, s_{j+3}] (the third
+  // derivative of the cubic through the four nodes).
+  std::vector<std::array<double, 4>> d(n - 3);
+  for (std::size_t j = 0; j + 3 < n; ++j)
+    for (std::size_t k = 0; k < 4; ++k) {
+      double denom = 1.0;
+      for (std::size_t m = 0; m < 4; ++m)
+        if (m != k) denom *= s[j + k] - s[j + m];
+      d[j][k] = 6.0 / denom;
+    }
+  // A = W + λ D³ᵀ H D³: symmetric, bandwidth 3, stored as band[i][b] = A(i, i + b).
+  std::vector<std::array<double, 4>> band(n, {0.0, 0.0, 0.0, 0.0});
+  std::vector<double> g(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = weights.empty() ? 1.0 : weights[i];
+    band[i][0] = w;
+    g[i] = w * f[i];
+  }
+  for (std::size_t j = 0; j + 3 < n; ++j) {
+    const double hbar = (s[j + 3] - s[j]) / 3.0;
+    for (std::size_t k = 0; k < 4; ++k)
+      for (std::size_t m = k; m < 4; ++m) band[j + k][m - k] += lambda * hbar * d[j][k] * d[j][m];
+  }
+  // Banded Cholesky A = L·Lᵀ with L(i, i − b) = l[i][b].
+  std::vector<std::array<double, 4>> l(n, {0.0, 0.0, 0.0, 0.0});
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t b = std::min<std::size_t>(3, i); b >= 1; --b) {
+      const std::size_t c = i - b;  // the column
+      double v = band[c][b];
+      for (std::size_t m = 1; b + m <= 3 && m <= c; ++m) v -= l[i][b + m] * l[c][m];
+      l[i][b] = v / l[c][0];
+    }
+    double v = band[i][0];
+    for (std::size_t b = 1; b <= 3 && b <= i; ++b) v -= l[i][b] * l[i][b];
+    l[i][0] = std::sqrt(v);
+  }
+  for (std::size_t i = 0; i < n; ++i) {  // L y = rhs
+    for (std::size_t b = 1; b <= 3 && b <= i; ++b) g[i] -= l[i][b] * g[i - b];
+    g[i] /= l[i][0];
+  }
+  for (std::size_t i = n; i-- > 0;) {  // Lᵀ g = y
+    for (std::size_t b = 1; b <= 3 && i + b < n; ++b) g[i] -= l[i + b][b] * g[i + b];
+    g[i] /= l[i][0];
+  }
+  return g;
 }
 
 }  // namespace rollcontact::wheelrail

@@ -92,8 +92,6 @@ void check_supported(const WheelRailRecord& r) {
     not_supported(
         "variable wheel profiles (wheel slices files; not yet validated: contact location on "
         "the flat)");
-  if (r.rail.smooth > 0 && r.rail.ismooth == 2) not_supported("ISMOOTH=2 (rail profile)");
-  if (r.wheel.smooth > 0 && r.wheel.ismooth == 2) not_supported("ISMOOTH=2 (wheel profile)");
   // Flash temperatures per patch as in module 3 (spec/physics.md §15), steady rolling and
   // static cases only, like module 3.
   if (d.h != 0 && d.t != 0 && d.t != 3)

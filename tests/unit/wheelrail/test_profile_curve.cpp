@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "rollcontact/errors.hpp"
 #include "wheelrail/profile_curve.hpp"
@@ -49,6 +52,67 @@ TEST(SmoothingSpline, LargeLambdaTendsToTheLeastSquaresLine) {
   }
   EXPECT_GT(res_m, 0.0);
   EXPECT_LT(res_m, res_n);
+}
+
+TEST(ThirdOrderSmoothing, QuadraticsPassUnchanged) {
+  // ISMOOTH = 2 penalises third derivatives only: any quadratic is its own smoothing, on
+  // non-uniform nodes too.
+  std::vector<double> s, f;
+  for (int i = 0; i < 60; ++i) {
+    s.push_back(0.3 * i + 0.1 * std::sin(1.7 * i));
+    f.push_back(2.0 - 0.4 * s.back() + 0.05 * s.back() * s.back());
+  }
+  const std::vector<double> g = wheelrail::smooth_third_order(s, f, {}, 1e3);
+  for (std::size_t i = 0; i < f.size(); ++i) EXPECT_NEAR(g[i], f[i], 1e-7) << i;  // rounding
+}
+
+TEST(ThirdOrderSmoothing, ASineAtTheFilterWavelengthKeepsHalfItsAmplitude) {
+  // Dense uniform nodes with chord-length weights: the filter 1/(1 + λ(2π/L)⁶) with
+  // λ = (L_filt/2π)⁶ — 1/2 at L = L_filt, 0.99976 at 4·L_filt, 1/65 at L_filt/2 — read off in
+  // the middle, away from the ends.
+  const double l_filt = 4.0, ds = 0.02;
+  const double lambda = std::pow(l_filt / (2.0 * std::numbers::pi), 6);
+  for (const auto& [wavelength, expected] :
+       {std::pair{l_filt, 0.5}, std::pair{4.0 * l_filt, 1.0 / (1.0 + std::pow(0.25, 6))},
+        std::pair{0.5 * l_filt, 1.0 / 65.0}}) {
+    std::vector<double> s, f, w;
+    for (int i = 0; i <= 4000; ++i) {
+      s.push_back(ds * i);
+      f.push_back(std::sin(2.0 * std::numbers::pi * s.back() / wavelength));
+      w.push_back(ds);
+    }
+    const std::vector<double> g = wheelrail::smooth_third_order(s, f, w, lambda);
+    double amplitude = 0.0;
+    for (std::size_t i = 1500; i <= 2500; ++i) amplitude = std::max(amplitude, std::abs(g[i]));
+    EXPECT_NEAR(amplitude, expected, 0.01 * expected + 1e-3) << "L = " << wavelength;
+  }
+}
+
+TEST(ThirdOrderSmoothing, ProfileCurveWithIsmooth2FiltersNoise) {
+  // A circular head with ±5 µm of noise (period 0.3 mm) on points 0.1 mm apart: ISMOOTH = 2, L_filt
+  // = 2 mm, brings the curve back to within 1.5 µm of the circle, ISMOOTH = 0 without smoothing
+  // keeps the noise.
+  const double r = 300.0;
+  model::WheelRailProfile p;
+  for (int i = -300; i <= 300; ++i) {
+    const double y = 0.1 * i;
+    p.points.y.push_back(y);
+    p.points.z.push_back(r - std::sqrt(r * r - y * y) + 0.005 * (((i % 3) + 3) % 3 - 1));
+  }
+  p.points.file = "noisy crown (test)";
+  p.smoothing.method = 2;
+  p.smoothing.smooth = 2.0;
+  const wheelrail::ProfileCurve smooth(p, true);
+  p.smoothing.smooth = 0.0;
+  const wheelrail::ProfileCurve raw(p, true);
+  double worst_smooth = 0.0, worst_raw = 0.0;
+  for (double y = -20.0; y <= 20.0; y += 0.037) {
+    const double exact = r - std::sqrt(r * r - y * y);
+    worst_smooth = std::max(worst_smooth, std::abs(smooth.at_y(y).z - exact));
+    worst_raw = std::max(worst_raw, std::abs(raw.at_y(y).z - exact));
+  }
+  EXPECT_LT(worst_smooth, 1.5e-3);
+  EXPECT_GT(worst_raw, 4e-3);
 }
 
 TEST(ProfileCurve, CircularRailHeadIsEvaluatedToSplineAccuracy) {
