@@ -276,6 +276,14 @@ wheelrail::SuperGridBox contact_box(const Solution& s, const PatchSetup& setup) 
   return b;
 }
 
+/// The pitch moment on the rail about the wheelset's axle, in wheelset coordinates [N·mm]: the
+/// moment about the wheel marker m plus m × F (F=2's MY_WS). The marker lies about the wheel's
+/// radius below the axle, so M_y ≈ r·F_x(ws).
+double axle_pitch_moment(const WheelRailSolution& s) {
+  const Vector3& m = s.wheel_marker_ws.position;
+  return s.moment_ws.y + m.z * s.force_ws.x - m.x * s.force_ws.z;
+}
+
 /// Linear theory's d(F_x/F_z)/dVPITCH [s/rad] (spec-additions §A6): Σ G·a·b·C11·r/|V| over the
 /// patches (a, b the equivalent ellipse of each patch's contact, G and ν its combined constants),
 /// r the distance of the contact point below the axle, over F_z.
@@ -676,20 +684,18 @@ WheelRailSolution WheelsetSolver::Impl::solve_massless_rail(
 
 WheelRailSolution WheelsetSolver::Impl::solve_pitch_velocity(
     const model::WheelRailProblem& problem) {
+  const bool moment = problem.longitudinal == model::LongitudinalLoading::Moment;
+  const std::string what = moment ? "a prescribed pitch moment MY_WS (F=2)"
+                                  : "a prescribed longitudinal force FX_WS (F=1)";
   if (problem.vertical != model::VerticalLoading::Force)
-    throw ProblemError(
-        "a prescribed longitudinal force FX_WS (F=1) requires the vertical force prescribed (N=1)");
+    throw ProblemError(what + " requires the vertical force prescribed (N=1)");
   if (problem.massless_rail.enabled)
-    throw ProblemError(
-        "a prescribed longitudinal force FX_WS (F=1) and the massless rail (F=3) exclude each "
-        "other");
+    throw ProblemError(what + " and the massless rail (F=3) exclude each other");
   if (problem.patch.tangential.kind == model::TangentialKind::None)
-    throw ProblemError("a prescribed longitudinal force FX_WS (F=1) requires a tangential problem");
+    throw ProblemError(what + " requires a tangential problem");
   const double v = model::rolling_speed_mm_s(problem);
   if (!(std::abs(v) > 0.0))
-    throw ProblemError(
-        "a prescribed longitudinal force FX_WS (F=1) requires a rolling velocity VS (roller rig: "
-        "RPITCH)");
+    throw ProblemError(what + " requires a rolling velocity VS (roller rig: RPITCH)");
   const double eps = problem.patch.solver.tolerance;
   const double mu = std::max(problem.patch.friction.static_coefficient, 1e-3);
   model::WheelRailProblem q = problem;
@@ -705,7 +711,11 @@ WheelRailSolution WheelsetSolver::Impl::solve_pitch_velocity(
     result = solve_placed(q, vo);
     wheelrail::PitchVelocitySample sample;
     sample.usable = result.converged && std::abs(result.force_tr.z) > 0.0;
-    sample.ratio = sample.usable ? result.force_ws.x / result.force_tr.z : 0.0;
+    // F=2: the moment about the axle over the wheel's radius, M_y/(r·F_z) ≈ F_x/F_z, so the
+    // same saturation, slope and tolerances serve.
+    const double along =
+        moment ? axle_pitch_moment(result) / problem.wheelset.nominal_radius_mm : result.force_ws.x;
+    sample.ratio = sample.usable ? along / result.force_tr.z : 0.0;
     sample.vertical_error = std::abs(result.force_tr.z / problem.motion.fz_N - 1.0);
     return sample;
   };
@@ -716,7 +726,9 @@ WheelRailSolution WheelsetSolver::Impl::solve_pitch_velocity(
       std::abs(problem.motion.vpitch_rad_s) > 0.0 ? problem.motion.vpitch_rad_s : -v / nominal;
   wheelrail::PitchVelocitySettings st;
   st.start_rad_s = start;
-  st.target = problem.motion.fx_ws_N / problem.motion.fz_N;
+  st.target = (moment ? problem.motion.my_ws_Nmm / problem.wheelset.nominal_radius_mm
+                      : problem.motion.fx_ws_N) /
+              problem.motion.fz_N;
   st.saturation = mu;
   st.tolerance = eps * mu;
   st.vertical_tolerance = eps;
@@ -773,7 +785,7 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
         "FZ = {:g} N < 1e-9 N: no contact computed (z_ws = 0, zero forces)", problem.motion.fz_N));
     return none;
   }
-  WheelRailSolution result = problem.longitudinal == model::LongitudinalLoading::Force
+  WheelRailSolution result = problem.longitudinal != model::LongitudinalLoading::PitchVelocity
                                  ? impl_->solve_pitch_velocity(problem)
                              : problem.massless_rail.enabled ? impl_->solve_massless_rail(problem)
                                                              : impl_->solve_placed(problem, {});
@@ -782,7 +794,7 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
     throw NotSupportedError(
         "not supported yet: module 1 patches between D_SEP and D_TURN (their reference angles "
         "turned towards each other; not yet validated: mbench_a22_varfric case 3 differs)");
-  if (problem.longitudinal != model::LongitudinalLoading::Force)
+  if (problem.longitudinal == model::LongitudinalLoading::PitchVelocity)
     result.vpitch_rad_s = problem.motion.vpitch_rad_s;
   if (!problem.patch.subsurface.empty()) {
     const auto start = std::chrono::steady_clock::now();

@@ -123,6 +123,10 @@ struct WheelsetState {
   /// Longitudinal force on the rail in wheelset coordinates FX_WS [N] (LongitudinalLoading::Force
   /// only; CONTACT's F=1): the pitch velocity is then solved for.
   double fx_ws_N = 0.0;
+  /// Pitch moment on the rail about the wheelset's axle, in wheelset coordinates, MY_WS [N·mm]
+  /// (LongitudinalLoading::Moment only; CONTACT's experimental F=2): the pitch velocity is then
+  /// solved for.
+  double my_ws_Nmm = 0.0;
 };
 
 /// A flexible wheelset (CONTACT's E = 4, 5; spec/wheelrail-advanced.md §5.1): the wheel's
@@ -152,7 +156,7 @@ enum class VerticalLoading { Position, Force };
 /// What fixes the wheelset's rolling: its pitch velocity VPITCH (F=0), or the longitudinal
 /// force FX_WS on the rail with VPITCH solved for (CONTACT's experimental F=1; requires the
 /// vertical force prescribed, spec-additions §A6).
-enum class LongitudinalLoading { PitchVelocity, Force };
+enum class LongitudinalLoading { PitchVelocity, Force, Moment };
 
 /// The massless rail model (CONTACT's F=3, spec/wheelrail-advanced.md §2): the rail deflects
 /// laterally by δy and vertically by δz [mm] until the contact force on it, a linear spring and a

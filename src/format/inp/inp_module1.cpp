@@ -137,6 +137,7 @@ void check_digits(CaseContext& c) {
                               prev.n, d.n));
   }
   if (d.f == 1 && d.n != 1) in.fail(c.l1, "F=1 (prescribed FX_WS) requires N=1");
+  if (d.f == 2 && d.n != 1) in.fail(c.l1, "F=2 (prescribed MY_WS) requires N=1");
   if (d.f == 3 && d.t == 0)
     in.fail(c.l1, "F=3 (massless rail) requires a tangential problem: T=0 is not allowed");
   if (d.c == 0) {
@@ -379,21 +380,21 @@ void read_velocity_line(InpStream& in, const ControlDigits& d, WheelRailRecord& 
   WheelsetMotion& mo = p.motion;
   const bool roller = p.is_roller();
   const std::string_view q1 = roller ? "RPITCH" : "VS";
-  const std::string_view q6 = d.f == 1 ? "FX_WS" : "VPITCH";
+  const std::string_view q6 = d.f == 1 ? "FX_WS" : d.f == 2 ? "MY_WS" : "VPITCH";
   const GroupValues g =
       in.read_group({{q1, roller ? kAngle : kReal},
                      {"VY", kReal},
                      {"VZ", kReal},
                      {"VROLL", kAngle},
                      {"VYAW", kAngle},
-                     {q6, d.f == 1 ? kReal : kAngle}},
+                     {q6, d.f == 1 || d.f == 2 ? kReal : kAngle}},
                     fmt::format("the wheelset velocity line ({} VY VZ VROLL VYAW {})", q1, q6));
   (roller ? mo.rpitch : mo.vs) = g.real(0);
   mo.vy = g.real(1);
   mo.vz = g.real(2);
   mo.vroll = g.real(3);
   mo.vyaw = g.real(4);
-  (d.f == 1 ? mo.fx : mo.vpitch) = g.real(5);
+  (d.f == 1 ? mo.fx : d.f == 2 ? mo.my : mo.vpitch) = g.real(5);
 }
 
 /// Line 22 (E=4, 5): deviations of a flexible wheel and their rates.

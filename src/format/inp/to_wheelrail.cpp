@@ -74,9 +74,8 @@ void check_supported(const WheelRailRecord& r) {
   // and are solved with D=2 or D=5 (contact_search_note()).
   if (r.discretisation.method == 4)
     not_supported(fmt::format("contact search D={} (conformal contact)", r.discretisation.method));
-  // F=1 (FX_WS prescribed, VPITCH solved) and F=3 (massless rail) are solved; F=2 (MY_WS
-  // prescribed, experimental in CONTACT and not in the spec) is not.
-  if (d.f == 2) not_supported("prescribed wheelset moment F=2 (experimental in CONTACT)");
+  // F=1 (FX_WS prescribed), F=2 (MY_WS prescribed; both experimental in CONTACT, VPITCH solved)
+  // and F=3 (massless rail) are solved.
   // KPEC/ANALYN (B=5, 6) reproduce mbench_a22_kpec cases 2-5; the wheel/rail solver refuses
   // the patches where they do not (cases 1 and 6; model::WheelRailProblem::validated_only).
   // V=1, 2: the wheel/rail solver interpolates the friction per patch (model::FrictionVariation);
@@ -130,6 +129,10 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   if (r.digits.f == 1) {
     p.longitudinal = model::LongitudinalLoading::Force;
     p.motion.fx_ws_N = m.fx;
+  }
+  if (r.digits.f == 2) {
+    p.longitudinal = model::LongitudinalLoading::Moment;
+    p.motion.my_ws_Nmm = m.my;
   }
   if (r.digits.f == 3) {
     if (!r.has_massless_rail)

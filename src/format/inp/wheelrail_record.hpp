@@ -105,6 +105,7 @@ struct WheelsetMotion {
   double vroll = 0.0, vyaw = 0.0;             ///< [rad/s]
   double vpitch = 0.0;                        ///< F=0,3: wheelset angular velocity [rad/s]
   double fx = 0.0;  ///< F=1 (experimental): longitudinal force FX_WS [N] replaces VPITCH
+  double my = 0.0;  ///< F=2 (experimental): pitch moment MY_WS [N·mm] replaces VPITCH
 };
 
 /// Flexible wheel deviations and their rates (E=4,5).

@@ -550,6 +550,7 @@ class WheelRailWriter {
     line("side", sides[static_cast<std::size_t>(std::clamp(r_.config, 0, 5))]);
     if (r_.digits.n == 1) line("vertical_force_N", real(r_.motion.fz));
     if (r_.digits.f == 1) line("longitudinal_force_N", real(r_.motion.fx));
+    if (r_.digits.f == 2) line("pitch_moment_Nmm", real(r_.motion.my));
     const WheelRailDiscretisation& ds = r_.discretisation;
     table("case.wheel_rail.discretisation");
     line("element_size_mm", real_array(std::array<double, 2>{ds.dx, ds.ds}));

@@ -178,6 +178,14 @@ void read_motion(Table& w, WheelRailRecord& r) {
     m.fx = *fx;
     r.digits.f = 1;
   }
+  // F=2: the pitch moment on the rail about the axle instead, VPITCH solved for.
+  if (const auto my = w.opt_real("pitch_moment_Nmm")) {
+    if (!fz) w.fail_key("pitch_moment_Nmm", "needs vertical_force_N (N=1), not position.z_mm");
+    if (r.digits.f == 1)
+      w.fail_key("pitch_moment_Nmm", "and longitudinal_force_N exclude each other");
+    m.my = *my;
+    r.digits.f = 2;
+  }
   Table v = w.table("velocity");
   m.vs = v.real_or("forward_mm_per_s", 0.0);
   m.vy = v.real_or("y_mm_per_s", 0.0);

@@ -132,6 +132,28 @@ TEST(PrescribedLongitudinalForce, GivesBackThePitchVelocityOfItsForce) {
   EXPECT_LE(solved.pitch_iterations, 8);
 }
 
+TEST(PrescribedPitchMoment, GivesBackThePitchVelocityOfItsMoment) {
+  REQUIRE_EXAMPLES();
+  // F=2 (MY_WS, the moment on the rail about the axle): F=0 at a pitch velocity 0.1 % above free
+  // rolling gives a moment; F=2 with that moment finds the pitch velocity again. The moment is
+  // the force's times the rolling radius, r·F_x(ws), within the small moments about the marker.
+  model::WheelRailProblem p = ma_et_al_proxy(0.5, 100e3);
+  p.motion.vpitch_rad_s = -1.001 * p.motion.vs_mm_s / 460.0;
+  const WheelRailSolution given = WheelsetSolver().solve(p);
+  ASSERT_TRUE(given.converged) << given.message;
+  const Vector3& m = given.wheel_marker_ws.position;
+  const double my = given.moment_ws.y + m.z * given.force_ws.x - m.x * given.force_ws.z;
+  EXPECT_NEAR(my, 460.0 * given.force_ws.x, 0.01 * std::abs(460.0 * given.force_ws.x));
+  model::WheelRailProblem q = p;
+  q.longitudinal = model::LongitudinalLoading::Moment;
+  q.motion.my_ws_Nmm = my;
+  q.motion.vpitch_rad_s = 0.0;
+  const WheelRailSolution solved = WheelsetSolver().solve(q);
+  ASSERT_TRUE(solved.converged) << solved.message;
+  EXPECT_NEAR(solved.vpitch_rad_s, p.motion.vpitch_rad_s, 2e-5);
+  EXPECT_NEAR(solved.force_ws.x, given.force_ws.x, 0.5 + 1e-5 * std::abs(given.force_ws.x));
+}
+
 TEST(PrescribedLongitudinalForce, MatchesContactOnTheMaEtAlProxy) {
   REQUIRE_EXAMPLES();
   // CONTACT (open-source build, rev. 2707) with F1=1, FX_WS = −0.25·FZ at 100 kN, DX = DS =
