@@ -759,6 +759,10 @@ void check_roller(const model::WheelRailProblem& p) {
   if (!std::isfinite(r) || std::abs(r) < 1.0)
     throw ProblemError(fmt::format(
         "roller rig: the roller radius NOMRADR = {:g} mm must be at least 1 mm in magnitude", r));
+  if (!p.rail.slices.u.empty())
+    throw NotSupportedError(
+        "not supported yet: module 1 rail slices on a roller rig (a roller profile varying "
+        "around the roller)");
   if (r < 0.0 && -r <= p.wheelset.nominal_radius_mm)
     throw ProblemError(fmt::format(
         "roller rig: an internal roller (NOMRADR = {:g} mm < 0) must be wider than the wheel "

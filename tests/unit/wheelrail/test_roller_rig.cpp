@@ -207,6 +207,11 @@ TEST(RollerRig, ImpossibleRollersAreRefused) {
   EXPECT_THROW(solver.solve(p), ProblemError);
   p.roller.nominal_radius_mm = 0.0;
   EXPECT_THROW(solver.solve(p), ProblemError);
+  // A roller whose profile varies (slices) has no meaning here yet: refused, not misread.
+  model::WheelRailProblem sliced = crowned_roller(500.0);
+  sliced.rail.slices.u = {0.0, 100.0};
+  sliced.rail.slices.slices = {sliced.rail.points, sliced.rail.points};
+  EXPECT_THROW(solver.solve(sliced), NotSupportedError);
 }
 
 }  // namespace
