@@ -56,7 +56,8 @@ const Tolerance* ToleranceTable::find(std::string_view key) const {
     return it == by_quantity.end() ? nullptr : &it->second;
   }
   // `patch k/NAME`: module-1 patch quantities, `patch/NAME` where module 1 differs from module 3.
-  if (const auto slash = key.rfind('/');
+  // NAME may hold slashes itself (FX/FSTAT/FN, not compared): only the prefix is cut.
+  if (const auto slash = key.find('/');
       slash != std::string_view::npos && key.substr(0, 6) == "patch ") {
     key.remove_prefix(slash + 1);
     const auto m1 = by_quantity.find("patch/" + std::string(key));

@@ -55,6 +55,9 @@ TEST(ValidationTolerances, TableHasTheContractQuantities) {
   EXPECT_NEAR(allowed_difference(*t.find("patch 1/DELTCP(TR)"), -0.029, 10000.0), 1.05e-4, 1e-10);
   EXPECT_NEAR(allowed_difference(*t.find("Z_WS"), 0.1981, 10000.0), 2e-3, 1e-10);
   EXPECT_EQ(t.find("patch 2/NCON"), t.find("NCON"));
+  // A patch quantity whose name holds slashes is not taken for its last part.
+  EXPECT_EQ(t.find("patch 1/FX/FSTAT/FN"), nullptr);
+  EXPECT_EQ(t.find("patch 1/FS/FSTAT/FN"), nullptr);
   // The contract: forces 1e-3 relative + 1e-6·FN absolute; counts at least ±2.
   EXPECT_NEAR(allowed_difference(*t.find("FX"), 100.0, 1000.0), 0.1 + 1e-3, 1e-9);
   EXPECT_NEAR(allowed_difference(*t.find("NCON"), 177, 9.195), 2.0, 1e-12);
