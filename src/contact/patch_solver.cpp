@@ -748,10 +748,23 @@ tangential::TangentialResult CaseSolver::solve_tangential(double cksi, double ce
   sys.chi = sol_.kinematics.chi;
   sys.a = tops_->view();
   sys.contact = contact_set();
+  const std::vector<double>& rows = problem_.friction.row_coefficients;
   if (mu != nullptr) {
     sys.bound.assign(n, 0.0);
     for (std::size_t i = 0; i < n; ++i)
       if (sys.contact[i]) sys.bound[i] = (*mu)[i] * sol_.pn[i];
+  } else if (!rows.empty()) {
+    // V=3: Coulomb's bound with the coefficient of the element's grid row.
+    if (rows.size() != static_cast<std::size_t>(grid_.my))
+      throw ProblemError(fmt::format(
+          "variable friction V=3 gives {} rows of friction coefficients for a grid of MY = {}",
+          rows.size(), grid_.my));
+    sys.bound.assign(n, 0.0);
+    for (int iy = 0; iy < grid_.my; ++iy)
+      for (int ix = 0; ix < grid_.mx; ++ix) {
+        const std::size_t i = grid_.index(ix, iy);
+        if (sys.contact[i]) sys.bound[i] = rows[static_cast<std::size_t>(iy)] * sol_.pn[i];
+      }
   } else {
     friction_->traction_bounds(sol_.pn, sys.bound);
   }

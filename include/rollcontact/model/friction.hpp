@@ -4,6 +4,7 @@
 // surface temperature of body 1 [°C] (L = 6), with friction memory.
 
 #include <array>
+#include <vector>
 
 namespace rollcontact::model {
 
@@ -43,6 +44,10 @@ struct Friction {
   /// memory_distance_mm, with slip velocities below memory_floor_speed_mm_s counted as that.
   double memory_distance_mm = 0.0;
   double memory_floor_speed_mm_s = 0.0;
+  /// CONTACT's V=3 (experimental, module 3): a Coulomb coefficient per grid row iy = 0..MY−1,
+  /// in place of static_coefficient in that row's traction bound. Empty: one coefficient.
+  /// Forces are still normalised by static_coefficient (the first row's, as CONTACT prints).
+  std::vector<double> row_coefficients{};
 
   [[nodiscard]] bool velocity_dependent() const {
     return law != FrictionLawKind::Coulomb && law != FrictionLawKind::TemperatureDependent;

@@ -177,7 +177,13 @@ void check_supported(const CaseRecord& record) {
   if ((d.e == 2 || d.e == 3) && d.m == 5)
     not_supported(
         fmt::format("the spin term dropped from the rigid slip (E={}) with FaStrip M=5", d.e));
-  if (d.v != 0) not_supported(fmt::format("variable friction V={}", d.v));
+  // V=3: one Coulomb coefficient per grid row, for the exact theory with creepages prescribed.
+  if (d.v != 0 && d.v != 3) not_supported(fmt::format("variable friction V={}", d.v));
+  if (d.v == 3 && (record.friction.law != 0 || d.f != 0 || d.m == 2 || d.m == 3 || d.m == 5))
+    not_supported(fmt::format(
+        "variable friction V=3 with L={}, F={}, M={} (Coulomb friction, prescribed creepages and "
+        "the exact theory only)",
+        record.friction.law, d.f, d.m));
   if ((d.t == 1 || d.t == 2) && record.friction.law == 6)
     not_supported(fmt::format("friction law L={} with T={}", record.friction.law, d.t));
   // Fastsim solves falling friction element by element (simplified/fastsim.hpp); CONTACT's
@@ -206,6 +212,8 @@ model::PatchProblem to_patch_problem(const CaseRecord& record) {
     p.bodies.traction_elements = model::TractionElements::bilinear;
   const Friction& f = record.friction;
   p.friction = to_model_friction(f.law, {f.fstat, f.fkin, f.params}, f.memdst, f.mem_s0);
+  if (d.v == 3)
+    for (const FrictionValues& row : f.rows) p.friction.row_coefficients.push_back(row.fstat);
   p.normal = normal_of(record);
   p.tangential = tangential_of(record);
   p.rolling = {record.kinematics.chi, record.kinematics.dq, record.kinematics.veloc,

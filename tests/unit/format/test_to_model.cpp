@@ -51,6 +51,23 @@ TEST(ToModel, ShiftExampleWithPrescribedForces) {
   EXPECT_TRUE(p.sequence.becomes_previous);
 }
 
+TEST(ToModel, FrictionPerRowV3) {
+  // V=3: each grid row's FSTAT becomes its Coulomb coefficient; with a falling law, prescribed
+  // forces or the simplified theory it is refused with the digits named.
+  CaseRecord r = basic_record();
+  r.digits.t = 3;
+  r.digits.v = 3;
+  r.friction.rows = {{0.2, 0.2, {}}, {0.25, 0.25, {}}, {0.3, 0.3, {}}};
+  const model::PatchProblem p = to_patch_problem(r);
+  ASSERT_EQ(p.friction.row_coefficients.size(), 3u);
+  EXPECT_DOUBLE_EQ(p.friction.row_coefficients[1], 0.25);
+  r.digits.m = 3;
+  EXPECT_THROW((void)to_patch_problem(r), NotSupportedError);
+  r.digits.m = 0;
+  r.friction.law = 2;
+  EXPECT_THROW((void)to_patch_problem(r), NotSupportedError);
+}
+
 TEST(ToModel, DigitsBecomeNamedChoices) {
   CaseRecord r = basic_record();
   r.digits.t = 3;
