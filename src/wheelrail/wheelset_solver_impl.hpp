@@ -1,0 +1,132 @@
+#pragma once
+// The state of a WheelsetSolver between cases and the steps of a case (private to
+// src/wheelrail): wheelset_solver.cpp runs one case at one height and places it,
+// wheelset_iterations.cpp iterates the height, the rail deflections and the pitch velocity,
+// wheelset_results.cpp turns patch solutions into the wheel/rail outputs.
+
+#include <optional>
+#include <vector>
+
+#include "rollcontact/wheelrail.hpp"
+#include "wheelrail/contact_search.hpp"
+#include "wheelrail/patch_setup.hpp"
+#include "wheelrail/placed_profiles.hpp"
+#include "wheelrail/vertical_force.hpp"
+#include "wheelrail/wheelset_pose.hpp"
+#include "wheelrail/wheelset_results.hpp"
+
+namespace rollcontact {
+
+using wheelrail::as_right_side;
+using wheelrail::axle_pitch_moment;
+using wheelrail::contact_box;
+using wheelrail::contact_modulus;
+using wheelrail::ContactRegion;
+using wheelrail::describe_markers;
+using wheelrail::describe_patch;
+using wheelrail::linear_pitch_slope;
+using wheelrail::mirror_to_left;
+using wheelrail::PatchSetup;
+using wheelrail::PlacedProfiles;
+using wheelrail::SearchResult;
+using wheelrail::to_public;
+using wheelrail::Vec3;
+using wheelrail::WheelsetPose;
+
+/// How the vertical equation of one solve is posed (the massless rail changes it).
+struct VerticalOptions {
+  double tolerance = -1.0;  ///< of the vertical iteration; <= 0: EPS of the case
+  /// N=0 with the massless rail: the rail's vertical spring kz [N/mm] and load fz [N]. The wheel
+  /// height over the undeflected rail is iterated and the rail deflection δz follows. 0: none.
+  double rail_kz_N_per_mm = 0.0, rail_fz_N = 0.0;
+};
+
+struct WheelsetSolver::Impl {
+  SolveOptions options;
+  std::optional<PlacedProfiles> profiles;
+  std::vector<PatchSolver> patch_solvers;  ///< one per patch position (cached operators)
+
+  const PlacedProfiles& profiles_for(const model::WheelRailProblem& p) {
+    if (!profiles || !profiles->same_curves(p)) {
+      profiles.emplace(p);
+      ++profiles_generation;
+    }
+    profiles->place(p);
+    return *profiles;
+  }
+
+  PatchSolver& solver_for(std::size_t k) {
+    while (patch_solvers.size() <= k) patch_solvers.emplace_back(options);
+    return patch_solvers[k];
+  }
+
+  /// Places the profiles and samples the gap for the case (everything independent of z_ws);
+  /// the rail samples are kept while the rail placement and DS stay the same.
+  void prepare(const model::WheelRailProblem& p) {
+    const PlacedProfiles& prof = profiles_for(p);
+    const RailKey key{profiles_generation, p.search.ds_mm,       prof.rail_y_mm(),
+                      prof.rail_z_mm(),    prof.rail_roll_rad(), prof.rail_u_mm()};
+    if (!(key == rail_key) || samples.rail_z.empty()) {
+      samples = wheelrail::sample_rail(p, prof);
+      rail_key = key;
+    }
+    wheelrail::sample_wheel(p, prof, wheelrail::pose_of(p, prof, 0.0), samples);
+  }
+
+  /// Everything at one wheelset height (after prepare()); `normal_only`: the patches' normal
+  /// problems alone (an estimate inside the vertical-force iteration).
+  WheelRailSolution solve_at(const model::WheelRailProblem& p, double z_ws, bool check_ends,
+                             bool normal_only = false);
+
+  /// One case in the case's own frame: mirrored for a left wheel, placed, solved, mirrored back.
+  WheelRailSolution solve_placed(const model::WheelRailProblem& problem, const VerticalOptions& v);
+  /// One case as a right wheel (left inputs already mirrored), after prepare().
+  WheelRailSolution solve_case(const model::WheelRailProblem& p, const VerticalOptions& v);
+  /// The wheelset height for the vertical equation of `st` (N=1, or N=0 with the massless rail).
+  WheelRailSolution solve_for_height(const model::WheelRailProblem& p,
+                                     const wheelrail::VerticalForceSettings& st);
+  /// F=3: the rail deflections around complete solves (spec/wheelrail-advanced.md §2).
+  WheelRailSolution solve_massless_rail(const model::WheelRailProblem& problem);
+  /// F=1: the pitch velocity for the prescribed FX_WS around complete N=1 solves
+  /// (spec-additions §A6).
+  WheelRailSolution solve_pitch_velocity(const model::WheelRailProblem& problem);
+
+  wheelrail::GapSamples samples;  ///< of the current case
+
+  /// What the rail samples depend on.
+  struct RailKey {
+    unsigned long generation = 0;  ///< of the profile curves
+    double ds = 0.0, rail_y = 0.0, rail_z = 0.0, rail_roll = 0.0;
+    double rail_u = 0.0;  ///< a sliced rail's section (S_WS)
+    bool operator==(const RailKey&) const = default;
+  };
+  RailKey rail_key;
+  unsigned long profiles_generation = 0;  ///< counts the profile curves made
+
+  /// Transient sequences (T=1, 2; spec/wheelrail-advanced.md §5.2–5.3): what the last complete
+  /// solve of a case would leave for the next case, per patch position — committed when the
+  /// case is done (commit_transient), since the force iterations' trial solves must all start
+  /// from the previous case.
+  struct PatchState {
+    Solution solution;
+    double origin_x = 0.0, origin_y = 0.0;  ///< the grid's origin on the super grid [mm]
+    wheelrail::SuperGridBox contact;        ///< its contact area on the super grid
+  };
+  std::vector<PatchState> pending;
+  /// The previous case's contact area per patch position (super grid): the patches of the next
+  /// case that overlap it continue its sequence.
+  std::vector<std::optional<wheelrail::SuperGridBox>> previous_contact;
+  void commit_transient();
+
+  /// The last complete solve had patches whose angles the D_TURN rule turned (validated_only
+  /// refuses its result: docs/decisions.md, "Variable friction (V=1, 2) and the D_TURN rule").
+  bool last_solve_turned = false;
+  /// The last converged vertical-force iteration: its approach z_ws − z_first-contact [mm] and
+  /// its force [N] (the start of the next with I ≥ 1).
+  double last_approach_mm = 0.0, last_fz_N = 0.0;
+
+  /// Wall time of the current case [s] (see WheelRailSolution).
+  double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
+};
+
+}  // namespace rollcontact
