@@ -10,6 +10,10 @@
 
 namespace rollcontact::post {
 
+/// Weight of grid node (i, j), 0 ≤ i ≤ mx, 0 ≤ j ≤ my, for element values p (ix + mx·iy):
+/// p(i, j) − p(i, j−1) − p(i−1, j) + p(i−1, j−1), elements outside the grid taken as 0.
+double nodal_weight(const Grid& grid, const std::vector<double>& p, int i, int j);
+
 /// Σ_e p_e ⟦F⟧_e = Σ_nodes w_node F(x − x_node, y − y_node): node (i, j) gets
 /// w = p(i, j) − p(i, j−1) − p(i−1, j) + p(i−1, j−1) of its four adjacent elements (zero outside
 /// the grid). Nodes with all weights zero are dropped (exterior area).

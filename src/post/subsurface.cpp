@@ -71,9 +71,7 @@ void set_point(SubsurfaceResult& r, std::size_t k, const LatticeFields* lattice,
         s.y[c] = -s.y[c];
       }
     }
-    const HalfSpaceResponse h = response_from_sums(s, depth, g, nu);
-    const Matrix3& st = h.stress;
-    f = {h.u[0], h.u[1], h.u[2], st[0][0], st[0][1], st[0][2], st[1][1], st[1][2], st[2][2]};
+    f = fields_of(response_from_sums(s, depth, g, nu));
   }
   r.ux[k] = f[kUx];
   r.uy[k] = f[kUy];

@@ -4,16 +4,16 @@
 
 #include "post/corner_functions.hpp"
 #include "post/half_space_response.hpp"
+#include "post/nodal_loads.hpp"
 
 namespace rollcontact::post {
 
-namespace {
-
-/// The nine fields of a response, in LatticeField order.
 std::array<double, kFieldCount> fields_of(const HalfSpaceResponse& h) {
   const Matrix3& s = h.stress;
   return {h.u[0], h.u[1], h.u[2], s[0][0], s[0][1], s[0][2], s[1][1], s[1][2], s[2][2]};
 }
+
+namespace {
 
 /// coefficient[f][c][k]: how much corner sum k of load component c (x, y, n) contributes to
 /// field f at depth z — the response is linear in the sums, so unit sums read it off.
@@ -39,11 +39,7 @@ SubsurfaceLattice::SubsurfaceLattice(const Grid& grid, const std::vector<double>
       n_fast_(core::good_fft_size(2 * grid.mx)),
       n_slow_(core::good_fft_size(2 * grid.my)),
       fft_(core::make_fft_engine(FftBackendKind::Default, n_fast_, n_slow_)) {
-  // Nodal weights w(i, j) = p(i, j) − p(i, j−1) − p(i−1, j) + p(i−1, j−1) (post/nodal_loads).
-  auto at = [&](const std::vector<double>& p, int ix, int iy) {
-    if (ix < 0 || iy < 0 || ix >= grid.mx || iy >= grid.my || p.empty()) return 0.0;
-    return p[grid.index(ix, iy)];
-  };
+  // The direct sum's nodal weights, on the periodic grid.
   const std::vector<double>* loads[3] = {&px, &py, &pn};
   std::vector<double> w(fft_->real_size());
   for (std::size_t c = 0; c < 3; ++c) {
@@ -51,8 +47,7 @@ SubsurfaceLattice::SubsurfaceLattice(const Grid& grid, const std::vector<double>
     const std::vector<double>& p = *loads[c];
     for (int j = 0; j <= grid.my; ++j)
       for (int i = 0; i <= grid.mx; ++i)
-        w[static_cast<std::size_t>(i + n_fast_ * j)] =
-            at(p, i, j) - at(p, i, j - 1) - at(p, i - 1, j) + at(p, i - 1, j - 1);
+        w[static_cast<std::size_t>(i + n_fast_ * j)] = nodal_weight(grid, p, i, j);
     load_spectra_[c].resize(fft_->spectrum_size());
     fft_->forward(w.data(), load_spectra_[c].data());
   }

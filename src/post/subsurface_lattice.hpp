@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/fft_backend.hpp"
+#include "post/half_space_response.hpp"
 #include "rollcontact/grid.hpp"
 
 namespace rollcontact::post {
@@ -22,6 +23,9 @@ enum LatticeField : std::size_t { kUx, kUy, kUz, kSxx, kSxy, kSxz, kSyy, kSyz, k
 
 /// Per field, one value per element centre (ix + mx·iy).
 using LatticeFields = std::array<std::vector<double>, kFieldCount>;
+
+/// The nine fields of one response, in LatticeField order.
+std::array<double, kFieldCount> fields_of(const HalfSpaceResponse& h);
 
 class SubsurfaceLattice {
  public:

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "wheelrail/golden_section.hpp"
 #include "wheelrail/sliced_locus.hpp"
 
 namespace rollcontact::wheelrail {
@@ -119,42 +120,21 @@ void minimise_gap_along_x(const PlacedProfiles& prof, const WheelsetPose& pose, 
       return r.z - t;
     };
     constexpr double kHalfWindow = 2.0;  // [mm]
-    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
     double centre = g.x_locus[j];
-    double a = 0.0, b = 0.0, c = 0.0, d = 0.0, fc = 0.0, fd = 0.0;
+    GoldenBracket br;
     for (int shift = 0; shift < 10; ++shift) {
-      a = centre - kHalfWindow;
-      b = centre + kHalfWindow;
-      c = b - golden * (b - a);
-      d = a + golden * (b - a);
-      fc = gap_at(c);
-      fd = gap_at(d);
-      for (int it = 0; it < 24; ++it) {
-        if (fc <= fd) {
-          b = d;
-          d = c;
-          fd = fc;
-          c = b - golden * (b - a);
-          fc = gap_at(c);
-        } else {
-          a = c;
-          c = d;
-          fc = fd;
-          d = a + golden * (b - a);
-          fd = gap_at(d);
-        }
-      }
-      const double x = 0.5 * (a + b);
+      br = golden_section_minimum(gap_at, centre - kHalfWindow, centre + kHalfWindow, 0.0, 24);
+      const double x = 0.5 * (br.a + br.b);
       const bool at_end = std::abs(x - (centre - kHalfWindow)) < 1e-3 ||
                           std::abs(x - (centre + kHalfWindow)) < 1e-3;
       if (!at_end) break;
       centre = x;  // the minimum lies beyond the window: move it
     }
     // The parabola through c, (c+d)/2, d refines the bracket's minimum.
-    const double m = 0.5 * (c + d), fm = gap_at(m), h = 0.5 * (d - c);
-    const double curvature = fc - 2.0 * fm + fd;
+    const double m = 0.5 * (br.c + br.d), fm = gap_at(m), h = 0.5 * (br.d - br.c);
+    const double curvature = br.fc - 2.0 * fm + br.fd;
     double x = m;
-    if (curvature > 0.0 && h > 0.0) x = m - 0.5 * h * (fd - fc) / curvature;
+    if (curvature > 0.0 && h > 0.0) x = m - 0.5 * h * (br.fd - br.fc) / curvature;
     double f = gap_at(x);
     if (!(f <= fm)) {
       x = m;

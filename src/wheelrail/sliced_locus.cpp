@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "wheelrail/golden_section.hpp"
+
 namespace rollcontact::wheelrail {
 
 namespace {
@@ -36,26 +38,11 @@ LocusPoint sliced_locus_point(const PlacedProfiles& prof, const WheelsetPose& po
     }
   }
   if (!found) return {};
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = best_phi - kScanStep_rad, b = best_phi + kScanStep_rad;
-  double c = b - g * (b - a), d = a + g * (b - a);
-  double zc = point_at(c).z, zd = point_at(d).z;
-  while (b - a > 1e-7) {
-    if (zc > zd) {
-      b = d;
-      d = c;
-      zd = zc;
-      c = b - g * (b - a);
-      zc = point_at(c).z;
-    } else {
-      a = c;
-      c = d;
-      zc = zd;
-      d = a + g * (b - a);
-      zd = point_at(d).z;
-    }
-  }
-  const double phi = 0.5 * (a + b);
+  // The deepest point is the lowest: the minimum of −z (bracket down to 1e-7 rad).
+  const GoldenBracket br =
+      golden_section_minimum([&](double phi) { return -point_at(phi).z; }, best_phi - kScanStep_rad,
+                             best_phi + kScanStep_rad, 1e-7, 1000);
+  const double phi = 0.5 * (br.a + br.b);
   const Vec3 pt = point_at(phi);
   return {pt.z >= best_z ? pt : point_at(best_phi), found};
 }

@@ -2,8 +2,9 @@
 // WheelRailRecord: the plain-data description of one module-1 (wheel/rail) case of a CONTACT
 // .inp file (spec/inp-format.md §5), fully resolved: "keep" digits carry the values of the
 // previous case of the same result element. Units as in CONTACT: mm, N, N/mm², s, rad; velocities
-// in mm/s, angular velocities in rad/s. Only the solver for it does not exist yet.
+// in mm/s, angular velocities in rad/s.
 
+#include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -114,6 +115,13 @@ struct WheelDeviations {
   double droll = 0.0, dyaw = 0.0, dpitch = 0.0;  ///< [rad]
   double vx = 0.0, vy = 0.0, vz = 0.0;           ///< [mm/s]
   double vroll = 0.0, vyaw = 0.0, vpitch = 0.0;  ///< [rad/s]
+
+  /// True when a deviation or rate exceeds `threshold` in magnitude (0: any is set).
+  [[nodiscard]] bool any_above(double threshold) const noexcept {
+    for (const double v : {dx, dy, dz, droll, dyaw, dpitch, vx, vy, vz, vroll, vyaw, vpitch})
+      if (std::abs(v) > threshold) return true;
+    return false;
+  }
 };
 
 /// One module-1 wheel/rail case.

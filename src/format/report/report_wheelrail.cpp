@@ -37,11 +37,7 @@ void write_trace(std::ostream& os, const WheelRailSolution& s) {
 
 /// A flexible wheelset's deviations and rates (spec/wheelrail-advanced.md §5.1), when any is set.
 void write_wheel_deviations(std::ostream& os, const WheelDeviations& d) {
-  const double values[] = {d.dx, d.dy, d.dz, d.droll, d.dyaw, d.dpitch,
-                           d.vx, d.vy, d.vz, d.vroll, d.vyaw, d.vpitch};
-  bool flexible = false;
-  for (const double v : values) flexible = flexible || std::abs(v) > 1e-10;
-  if (!flexible) return;
+  if (!d.any_above(1e-10)) return;
   line(os, "");
   line(os, " FLEXIBLE WHEEL-SET DEVIATIONS");
   line(os, "     DXWHL       DYWHL       DZWHL       DROLLW      DYAWW       DPITCHW");

@@ -619,9 +619,7 @@ class WheelRailWriter {
     if (m.rpitch != 0.0) line("roller_pitch_rad_per_s", real(m.rpitch));
     // A flexible wheelset: its deviations (read with E = 4, 5 and kept by later cases).
     const WheelDeviations& d = r_.wheel_deviations;
-    if (d.dx != 0.0 || d.dy != 0.0 || d.dz != 0.0 || d.droll != 0.0 || d.dyaw != 0.0 ||
-        d.dpitch != 0.0 || d.vx != 0.0 || d.vy != 0.0 || d.vz != 0.0 || d.vroll != 0.0 ||
-        d.vyaw != 0.0 || d.vpitch != 0.0) {
+    if (d.any_above(0.0)) {
       table("case.wheel_rail.wheel_deviation");
       line("dx_mm", real(d.dx));
       line("dy_mm", real(d.dy));
