@@ -22,6 +22,27 @@ struct Vector3 {
   double x = 0.0, y = 0.0, z = 0.0;
 };
 
+/// What a conformal patch (CONTACT's D=4, spec/wheelrail-advanced.md §1) adds: its curved
+/// reference surface, one row of the patch grid per sample, and the forces both as integrals in
+/// the curvilinear frame (x, s̃, ñ) ("tilde") and turned row by row into the reference's tangent
+/// plane ("bar"). For a left wheel, lateral components are mirrored as everywhere else.
+struct ConformalPatch {
+  bool active = false;  ///< the patch was solved on a curved reference (D=4)
+  /// The curved reference per grid row (track coordinates, midway between rail and wheel): y, z
+  /// [mm] and the inclination α of its averaged normal [rad], same sense as the contact angle.
+  std::vector<double> row_y_mm{}, row_z_mm{}, row_alpha_rad{};
+  double ds_mm = 0.0;      ///< row spacing along the curve
+  double row0_s_mm = 0.0;  ///< curvilinear position s̃ of row 0's centre (reference at 0)
+  int contact_row_first = -1, contact_row_last = -1;  ///< rows with contact (0-based; −1: none)
+  double tilde_fn = 0.0, tilde_fx = 0.0, tilde_fs = 0.0;  ///< ∫ p in (x, s̃, ñ) [N]
+  double bar_fn = 0.0, bar_fx = 0.0, bar_fs = 0.0;        ///< ∫ R(α − δ)·p, planar frame [N]
+  /// Moments about the planar reference axes, the curved grid in planar coordinates [N mm]:
+  /// Mxp, Msp, Mnp (MN, the patch's printed torsional moment, is Mnp).
+  Vector3 moment_planar{};
+  /// V=1: the friction coefficient of each row (at its α); empty otherwise.
+  std::vector<double> row_friction{};
+};
+
 /// One contact patch.
 struct WheelRailPatch {
   Vector3 reference_tr;          ///< reference point in track coordinates [mm]
@@ -42,6 +63,7 @@ struct WheelRailPatch {
   double delta_rail_rad = 0, delta_wheel_rad = 0;  ///< contact angle in rail/wheel-profile frames
   double pressure_centre_x_mm = 0, pressure_centre_y_mm = 0;  ///< centre of pressure (track)
   model::Friction friction;  ///< the patch's coefficients (they vary with its place for V=1, 2)
+  ConformalPatch conformal;  ///< D=4 only (active)
   /// The patch as a module-3 problem: FN, FX and FS (= fy), MN (= mz, about the reference point),
   /// approach, pmax, energy, power, fields on the patch grid (x rolling, y along the contact).
   Solution solution;

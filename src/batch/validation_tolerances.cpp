@@ -39,7 +39,8 @@
 // Subsurface extremes (`SUBS b/SIGVM` …, S >= 1): 5e-3 relative + 0.001 N/mm², like PMAX; their
 // locations are not compared (near-equal maxima in neighbouring points).
 //
-// Not compared: FN/G, FX/FSTAT/FN, FY/FSTAT/FN (derived from the forces above), ELEN, FRIC,
+// Not compared: FN/G, FX/FSTAT/FN, FY/FSTAT/FN, FX/FN, FS/FN (derived from the forces above),
+// ELEN, FRIC,
 // NPOT (input), NPLAST, INORM, ITANG (iteration counts differ by design).
 
 #include "batch/validation_tolerances.hpp"
@@ -99,7 +100,10 @@ ToleranceTable default_tolerances() {
   const Tolerance location{.absolute = 5e-3};
   for (const char* name : {"FX(TR)", "FY(TR)", "FX(WS)", "FY(WS)", "FZ(WS)"})
     t.by_quantity.insert_or_assign(name, wheelrail_force);
-  for (const char* name : {"patch/FN", "patch/FX", "patch/FS"})
+  // Conformal patches (D=4) print the forces turned into the planar frame (BAR_) and the
+  // normal force integrated in the curvilinear one (TILDE_FN) instead of FN, FX, FS.
+  for (const char* name : {"patch/FN", "patch/FX", "patch/FS", "patch/BAR_FN", "patch/BAR_FX",
+                           "patch/BAR_FS", "patch/TILDE_FN"})
     t.by_quantity.emplace(name, wheelrail_force);
   t.by_quantity.emplace("patch/MN", Tolerance{.relative = 5e-3, .per_fn = 1e-3});
   t.by_quantity.emplace("patch/PMAX", Tolerance{.relative = 1e-2});

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "rollcontact/errors.hpp"
+#include "wheelrail/conformal_patch.hpp"
 
 namespace rollcontact::wheelrail {
 
@@ -123,18 +124,12 @@ std::pair<int, int> size_grid(const model::WheelRailProblem& p, double x_lo, dou
   int mx = 0, my = 0;
   const bool fixed = on_super_grid(p);
   for (int doubling = 0;; ++doubling) {
-    s.ix0 = static_cast<int>(std::floor(x_lo / s.dx_mm)) - 1;
-    s.iy0 = static_cast<int>(std::floor(std::min(s_lo, s_hi) / s.ds_mm)) - 1;
-    mx = static_cast<int>(std::ceil(x_hi / s.dx_mm)) + 1 - s.ix0 + 1;
-    my = static_cast<int>(std::ceil(std::max(s_lo, s_hi) / s.ds_mm)) + 1 - s.iy0 + 1;
-    // Grid sizes rounded up to multiples of 8 (extra elements split over both ends): the
-    // influence kernels and FFT plans depend on the size only, so the force iteration and
-    // neighbouring cases reuse them instead of recomputing (measured: most of the solve time).
-    const int pad_x = (8 - mx % 8) % 8, pad_y = (8 - my % 8) % 8;
-    s.ix0 -= pad_x / 2;
-    s.iy0 -= pad_y / 2;
-    mx += pad_x;
-    my += pad_y;
+    const GridAxis ax = cover_axis(x_lo, x_hi, s.dx_mm);
+    const GridAxis ay = cover_axis(std::min(s_lo, s_hi), std::max(s_lo, s_hi), s.ds_mm);
+    s.ix0 = ax.first;
+    s.iy0 = ay.first;
+    mx = ax.count;
+    my = ay.count;
     if (static_cast<long>(mx) * my < p.search.max_elements || doubling > 20 || fixed) break;
     s.dx_mm *= 2.0;
     s.ds_mm *= 2.0;
@@ -156,6 +151,19 @@ bool interpenetrates_at_x_ends(const std::vector<double>& h, int mx, int my, dou
 }
 
 }  // namespace
+
+GridAxis cover_axis(double lo, double hi, double h) {
+  GridAxis a;
+  a.first = static_cast<int>(std::floor(lo / h)) - 1;
+  a.count = static_cast<int>(std::ceil(hi / h)) + 1 - a.first + 1;
+  // Grid sizes rounded up to multiples of 8 (extra elements split over both ends): the
+  // influence kernels and FFT plans depend on the size only, so the force iteration and
+  // neighbouring cases reuse them instead of recomputing (measured: most of the solve time).
+  const int pad = (8 - a.count % 8) % 8;
+  a.first -= pad / 2;
+  a.count += pad;
+  return a;
+}
 
 ContactFrame contact_frame(const ContactRegion& region) {
   ContactFrame f;
@@ -181,13 +189,8 @@ void set_creepages(PatchKinematics& k, const ContactFrame& f, Vec3 v_P, Vec3 v_Q
   k.phi_per_mm = dot(omega_P - omega_Q, f.en) / k.veloc_mm_s;
 }
 
-/// Velocity v and angular velocity ω of the wheel's material point at Q [track]: the wheelset's
-/// motion, plus on a flexible wheelset the wheel's deviation rates about its marker m
-/// (wheelrail-advanced.md §5.1): v_Q = v_ws + ω_ws × r_Q + R·(v_w + ω_w × (q − m)), ω_Q = ω_ws
-/// + R·ω_w, q = Rᵀ·r_Q the point in wheelset coordinates.
-struct WheelPointMotion {
-  Vec3 v, omega;
-};
+}  // namespace
+
 WheelPointMotion wheel_point_motion(const model::WheelRailProblem& p, const WheelsetPose& pose,
                                     const PlacedProfiles& prof, Vec3 Q) {
   const model::WheelsetState& m = p.motion;
@@ -204,6 +207,17 @@ WheelPointMotion wheel_point_motion(const model::WheelRailProblem& p, const Whee
   }
   return w;
 }
+
+Vec3 rail_point_velocity(const model::WheelRailProblem& p, const PlacedProfiles& prof, Vec3 P) {
+  const model::RailState& rs = p.rail_state;
+  const double yaw_rate_track = -p.motion.vs_mm_s * p.track.curvature_per_mm;
+  const Vec3 rail_origin{0.0, prof.rail_y_mm(), prof.rail_z_mm()};
+  return Vec3{0.0, rs.vy_mm_s, rs.vz_mm_s} +
+         cross(Vec3{rs.vroll_rad_s, 0.0, 0.0}, P - rail_origin) +
+         cross(Vec3{0.0, 0.0, yaw_rate_track}, P);
+}
+
+namespace {
 
 /// T=1 (shifts): the velocity line holds the increments of one step, so the "velocity"
 /// differences are the shift distances themselves: V = 1, χ = 0, δq = 1
@@ -293,6 +307,14 @@ PatchKinematics patch_kinematics(const model::WheelRailProblem& p, const Wheelse
                           : track_kinematics(p, pose, prof, f, pen_mm);
 }
 
+namespace {
+/// The planar patch (D=2): grid, undeformed distance along the patch normal and approach; the
+/// grid is lengthened while a sliced wheel interpenetrates up to its ends.
+void setup_planar_grid(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                       const WheelsetPose& pose, double x_lo, double x_hi, double s_lo, double s_hi,
+                       PatchSetup& s, std::vector<std::string>& warnings);
+}  // namespace
+
 PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                        const WheelsetPose& pose, const ContactRegion& region,
                        std::vector<std::string>& warnings, const SuperGridBox* previous_contact) {
@@ -324,6 +346,31 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
     }
   }
   model::PatchProblem& q = s.problem;
+  if (p.search.conformal) {
+    q = p.patch;
+    setup_conformal_patch(p, prof, pose, region, s, warnings);
+  } else {
+    setup_planar_grid(p, prof, pose, x_lo, x_hi, s_lo, s_hi, s, warnings);
+    s.kinematics = patch_kinematics(p, pose, prof, s.frame, s.pen_mm);
+  }
+  set_attenuated_parts(prof, region, s.frame, q.gap);
+  q.normal.kind = model::NormalLoadKind::Approach;
+  q.normal.approach_mm = s.pen_mm;
+  q.tangential.creepage = {s.kinematics.xi, s.kinematics.eta, s.kinematics.phi_per_mm};
+  q.rolling.direction_rad = s.kinematics.chi_rad;
+  q.rolling.step_mm = s.kinematics.dq_mm;
+  q.rolling.velocity_mm_per_s = s.kinematics.veloc_mm_s;
+  q.sequence.origin_x_mm = s.origin_x_mm;
+  q.sequence.origin_y_mm = s.origin_y_mm;
+  return s;
+}
+
+namespace {
+
+void setup_planar_grid(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                       const WheelsetPose& pose, double x_lo, double x_hi, double s_lo, double s_hi,
+                       PatchSetup& s, std::vector<std::string>& warnings) {
+  model::PatchProblem& q = s.problem;
   std::vector<double> rail_n;  // the rail surface per element, for the angle-variation check
   for (int widening = 0;; ++widening) {
     const auto [mx, my] = size_grid(p, x_lo + s.origin_x_mm, x_hi + s.origin_x_mm,
@@ -351,17 +398,8 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
   const std::string angles = angle_variation_warning(q.gap.values, rail_n, s.pen_mm, q.potential.mx,
                                                      q.potential.my, s.ds_mm);
   if (!angles.empty()) warnings.push_back(angles);
-  set_attenuated_parts(prof, region, s.frame, q.gap);
-  q.normal.kind = model::NormalLoadKind::Approach;
-  q.normal.approach_mm = s.pen_mm;
-  s.kinematics = patch_kinematics(p, pose, prof, s.frame, s.pen_mm);
-  q.tangential.creepage = {s.kinematics.xi, s.kinematics.eta, s.kinematics.phi_per_mm};
-  q.rolling.direction_rad = s.kinematics.chi_rad;
-  q.rolling.step_mm = s.kinematics.dq_mm;
-  q.rolling.velocity_mm_per_s = s.kinematics.veloc_mm_s;
-  q.sequence.origin_x_mm = s.origin_x_mm;
-  q.sequence.origin_y_mm = s.origin_y_mm;
-  return s;
 }
+
+}  // namespace
 
 }  // namespace rollcontact::wheelrail

@@ -4,9 +4,12 @@
 // the grid of element centres at multiples of (DX, DS) covering the region, the undeformed
 // distance along the local normal, the approach, and the creepages from the kinematics.
 
+#include <optional>
+
 #include "rollcontact/model/patch_problem.hpp"
 #include "rollcontact/model/wheelrail.hpp"
 #include "wheelrail/contact_search.hpp"
+#include "wheelrail/curved_reference.hpp"
 #include "wheelrail/frames.hpp"
 
 namespace rollcontact::wheelrail {
@@ -50,7 +53,34 @@ struct PatchSetup {
   double pen_mm = 0.0;  ///< approach: −min h
   PatchKinematics kinematics;
   model::PatchProblem problem;  ///< ready for PatchSolver::solve
+  /// Conformal contact (D=4): the curved reference, one sample per grid row; the grid's y is
+  /// the curvilinear s̃ and each row has its own normal (conformal_patch.hpp).
+  std::optional<CurvedReference> curved;
 };
+
+/// Velocity v and angular velocity ω of the wheel's material point at Q [track]: the wheelset's
+/// motion, plus on a flexible wheelset the wheel's deviation rates about its marker m
+/// (wheelrail-advanced.md §5.1): v_Q = v_ws + ω_ws × r_Q + R·(v_w + ω_w × (q − m)), ω_Q = ω_ws
+/// + R·ω_w, q = Rᵀ·r_Q the point in wheelset coordinates.
+struct WheelPointMotion {
+  Vec3 v, omega;
+};
+WheelPointMotion wheel_point_motion(const model::WheelRailProblem& problem,
+                                    const WheelsetPose& pose, const PlacedProfiles& profiles,
+                                    Vec3 Q);
+
+/// Velocity of the rail's material point P of a track [track, mm/s]: the rail's deviation rates
+/// (VYRAIL, VZRAIL, VROLLR about its origin) and the track's yaw rate −VS·CURV in a curve.
+Vec3 rail_point_velocity(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
+                         Vec3 P);
+
+/// Element centres at multiples of h covering [lo, hi] plus one guard element per side, their
+/// number rounded up to a multiple of 8 (kernels and FFT plans are reused by size): centre k of
+/// the axis lies at (first + k)·h.
+struct GridAxis {
+  int first = 0, count = 0;
+};
+GridAxis cover_axis(double lo_mm, double hi_mm, double h_mm);
 
 /// True for the tangential problems whose patches live on a super grid (T=1 shifts, T=2
 /// transient rolling).

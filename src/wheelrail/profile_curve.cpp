@@ -272,6 +272,9 @@ CurvePoint ProfileCurve::at_s(double s) const {
   p.y = yy;
   p.z = zz;
   p.dz_dy = dz / dy;
+  const double norm = std::hypot(dy, dz);
+  p.dy_ds = norm > 0.0 ? dy / norm : 0.0;
+  p.dz_ds = norm > 0.0 ? dz / norm : 0.0;
   p.s = s;
   p.found = true;
   return p;

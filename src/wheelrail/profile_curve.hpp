@@ -25,6 +25,9 @@ struct CurvePoint {
   double dz_dy = 0.0;
   double s = 0.0;
   bool found = false;  ///< false: y lies outside the profile
+  /// The unit tangent (dy/ds, dz/ds) along the curve parameter: set by at_s() only (a flange's
+  /// vertical tangent has no finite dz/dy).
+  double dy_ds = 0.0, dz_ds = 0.0;
 };
 
 class ProfileCurve {

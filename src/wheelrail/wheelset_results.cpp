@@ -10,6 +10,7 @@
 
 #include "simplified/flexibility.hpp"
 #include "simplified/kalker_coefficients.hpp"
+#include "wheelrail/conformal_patch.hpp"
 
 namespace rollcontact::wheelrail {
 
@@ -72,12 +73,19 @@ WheelRailPatch describe_patch(const model::WheelRailProblem& p, const PlacedProf
   w.veloc_mm_s = s.kinematics.veloc_mm_s;
   w.dx_mm = s.dx_mm;
   w.ds_mm = s.ds_mm;
-  const double fn = sol.totals.fn, fx = sol.totals.fx, fs = sol.totals.fy;
+  // A conformal patch's force in the planar frame is the bar force: each row's tractions turned
+  // from its own frame into the reference's (wheelrail-advanced.md §1.8).
+  if (s.curved) w.conformal = conformal_forces(s, sol);
+  const ConformalPatch& c = w.conformal;
+  const double fn = c.active ? c.bar_fn : sol.totals.fn;
+  const double fx = c.active ? c.bar_fx : sol.totals.fx;
+  const double fs = c.active ? c.bar_fs : sol.totals.fy;
+  const double mz = c.active ? c.moment_planar.z : sol.totals.mz;
   const Vec3 f_tr{fx, fs * std::cos(d) - fn * std::sin(d), fn * std::cos(d) + fs * std::sin(d)};
   w.force_tr = to_public(f_tr);
   w.force_ws = to_public(pose.rotation.transposed_times(f_tr));
   // Moments (physics.md §13.6): (r_ref − r_marker) × F + R_ref·(0, 0, MN), MN about the normal.
-  const Vec3 mn = sol.totals.mz * Vec3{0.0, -std::sin(d), std::cos(d)};
+  const Vec3 mn = mz * Vec3{0.0, -std::sin(d), std::cos(d)};
   const Vec3 rail_marker{0.0, prof.rail_y_mm(), prof.rail_z_mm()};
   const Vec3 wheel_marker = pose.centre + pose.rotation * wheelrail::wheel_marker_ws(p, prof);
   w.moment_tr = to_public(cross(ref - rail_marker, f_tr) + mn);
@@ -138,6 +146,14 @@ void mirror_to_left(WheelRailSolution& s) {
     Totals& t = w.solution.totals;
     t.fy = -t.fy;
     t.mz = -t.mz;
+    if (w.conformal.active) {
+      ConformalPatch& c = w.conformal;
+      c.tilde_fs = -c.tilde_fs;
+      c.bar_fs = -c.bar_fs;
+      flip_moment(c.moment_planar);
+      for (double& y : c.row_y_mm) y = -y;
+      for (double& a : c.row_alpha_rad) a = -a;
+    }
     t.creep_y = -t.creep_y;
     t.spin = -t.spin;
   }

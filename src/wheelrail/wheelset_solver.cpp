@@ -15,6 +15,33 @@
 
 namespace rollcontact {
 
+namespace {
+
+/// V=1: the friction at the rail surface inclination of the reference point (of the right-wheel
+/// computation), on a conformal patch at each row's inclination (wheelrail-advanced.md §3.3:
+/// module 3's friction per row); V=2: at the wheelset's place along the track, S_WS.
+void vary_friction(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                   PatchSetup& setup) {
+  model::Friction& f = setup.problem.friction;
+  if (p.friction_variation.along == model::FrictionVariation::Along::TrackPosition) {
+    f = wheelrail::friction_at(p.friction_variation, p.motion.s_mm);
+    return;
+  }
+  if (!setup.curved) {
+    f = wheelrail::friction_at(p.friction_variation,
+                               std::atan(prof.rail_at_track_y(setup.frame.origin.y).dz_dy));
+    return;
+  }
+  const std::vector<double>& alpha = setup.curved->alpha;
+  f = wheelrail::friction_at(p.friction_variation, alpha.front());
+  f.row_coefficients.clear();
+  for (double a : alpha)
+    f.row_coefficients.push_back(
+        wheelrail::friction_at(p.friction_variation, a).static_coefficient);
+}
+
+}  // namespace
+
 WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& p, double z_ws,
                                                  bool check_ends, bool normal_only) {
   using Clock = std::chrono::steady_clock;
@@ -45,15 +72,8 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
                                                                         : nullptr;
     PatchSetup setup =
         wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings, before);
-    if (p.friction_variation.along != model::FrictionVariation::Along::None) {
-      // V=1: the rail surface inclination at the reference point (of the right-wheel
-      // computation); V=2: the contact's place along the track.
-      const bool by_angle =
-          p.friction_variation.along == model::FrictionVariation::Along::RailInclination;
-      const double key = by_angle ? std::atan(prof.rail_at_track_y(setup.frame.origin.y).dz_dy)
-                                  : p.motion.s_mm + setup.frame.origin.x;
-      setup.problem.friction = wheelrail::friction_at(p.friction_variation, key);
-    }
+    if (p.friction_variation.along != model::FrictionVariation::Along::None)
+      vary_friction(p, prof, setup);
     // Steady rolling: the previous solve of this patch position (the last iterate, the last
     // case) is the start of the iterations; a normal-only estimate does not replace it.
     model::SequenceLink& link = setup.problem.sequence;
@@ -92,6 +112,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
       pending.push_back({sol, setup.origin_x_mm, setup.origin_y_mm, contact_box(sol, setup)});
     WheelRailPatch w = describe_patch(p, prof, pose, setup, std::move(sol));
     w.friction = setup.problem.friction;
+    w.conformal.row_friction = w.friction.row_coefficients;
     total_tr = total_tr + Vec3{w.force_tr.x, w.force_tr.y, w.force_tr.z};
     total_ws = total_ws + Vec3{w.force_ws.x, w.force_ws.y, w.force_ws.z};
     moment_tr = moment_tr + Vec3{w.moment_tr.x, w.moment_tr.y, w.moment_tr.z};

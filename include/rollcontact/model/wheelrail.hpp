@@ -66,6 +66,11 @@ struct ContactSearchSettings {
   /// length (false, CONTACT's default) or ∫g dx (true; spec/physics.md §13.3 step 4).
   bool linear_gap_weights = false;
   ContactSearch method = ContactSearch::Locus;
+  /// D=4, conformal contact: each patch found by the search is solved on a curved reference
+  /// surface between rail and wheel (gap along the local normals, rigid slip per element,
+  /// forces in the curvilinear and the planar frame; spec/wheelrail-advanced.md §1) instead of
+  /// the reference point's tangent plane. Steady rolling and static cases on a track.
+  bool conformal = false;
 };
 
 /// Track and rail position (Z=1,3). On a roller rig the same placement positions the roller

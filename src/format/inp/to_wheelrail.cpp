@@ -70,10 +70,19 @@ CaseRecord settings_record(const WheelRailRecord& r) {
 
 void check_supported(const WheelRailRecord& r) {
   const ControlDigits& d = r.digits;
-  // D=4 (conformal contact) is other physics; D=3, 6-9 only choose CONTACT's search variant
-  // and are solved with D=2 or D=5 (contact_search_note()).
-  if (r.discretisation.method == 4)
-    not_supported(fmt::format("contact search D={} (conformal contact)", r.discretisation.method));
+  // D=4 (conformal contact) solves each patch on a curved reference surface, on a track, for
+  // static and steady-rolling cases (wheelrail-advanced.md §1); D=3, 6-9 only choose CONTACT's
+  // search variant and are solved with D=2 or D=5 (contact_search_note()).
+  if (r.discretisation.method == 4) {
+    if (r.is_roller()) not_supported("conformal contact (D=4) on a roller rig");
+    if (r.wheel.sliced || r.rail.sliced)
+      not_supported("conformal contact (D=4) with variable profiles (slices files)");
+    if (d.t == 1 || d.t == 2)
+      not_supported(
+          fmt::format("conformal contact (D=4) with T={} (shifts and transient rolling "
+                      "on a super grid)",
+                      d.t));
+  }
   // F=1 (FX_WS prescribed), F=2 (MY_WS prescribed; both experimental in CONTACT, VPITCH solved)
   // and F=3 (massless rail) are solved.
   // KPEC/ANALYN (B=5, 6) reproduce mbench_a22_kpec cases 2-5; the wheel/rail solver refuses
@@ -145,6 +154,7 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
               ds.d_comb, ds.d_turn, ds.g_miss, r.npot_max, r.digits.gapwgt == 1};
   if (ds.method == 5 || ds.method == 6 || ds.method == 9)
     p.search.method = model::ContactSearch::GapGrid;
+  p.search.conformal = ds.method == 4;
   p.first_of_sequence = r.case_number == 1;
   p.estimate_from_previous_case = r.digits.i >= 1;
   p.validated_only = true;

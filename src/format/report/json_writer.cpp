@@ -117,6 +117,26 @@ nlohmann::json wheelrail_case_to_json(const CaseRecord& identity,
         {"statistics", {{"npot", s.npot}, {"ncon", s.ncon}, {"nadh", s.nadh}, {"nslip", s.nslip}}},
         {"converged", w.solution.solver.converged},
     });
+    if (w.conformal.active) {  // D=4: the planar (bar) forces above, the curved frame here
+      const ConformalPatch& c = w.conformal;
+      patches.back()["fn"] = c.bar_fn;
+      patches.back()["fx"] = c.bar_fx;
+      patches.back()["fs"] = c.bar_fs;
+      patches.back()["mn"] = c.moment_planar.z;
+      nlohmann::json conformal = {
+          {"tilde_fn", c.tilde_fn},
+          {"tilde_fx", c.tilde_fx},
+          {"tilde_fs", c.tilde_fs},
+          {"moments_planar", vec(c.moment_planar)},
+          {"row_y", c.row_y_mm},
+          {"row_z", c.row_z_mm},
+          {"row_alpha", c.row_alpha_rad},
+          {"row0_s", c.row0_s_mm},
+          {"contact_rows", nlohmann::json::array({c.contact_row_first, c.contact_row_last})},
+      };
+      if (!c.row_friction.empty()) conformal["row_friction"] = c.row_friction;
+      patches.back()["conformal"] = std::move(conformal);
+    }
     if (identity.digits.h >= 1) {  // flash temperatures of the patch [°C]
       patches.back()["max_temp1"] = t.max_temp1;
       patches.back()["max_temp2"] = t.max_temp2;

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "format/report/number_format.hpp"
+#include "format/report/report_conformal.hpp"
 #include "format/report/report_internal.hpp"
 #include "format/report/report_subsurface.hpp"
 #include "format/report/report_values.hpp"
@@ -108,6 +109,10 @@ void write_totals(std::ostream& os, const WheelRailRecord& r, const WheelRailSol
                sig(s.force_ws.y) + sig(s.force_ws.z));
 }
 
+/// The planar patch's force block (FN FX FS MN …, FN/G FX/FSTAT/FN …).
+void write_planar_forces(std::ostream& os, const WheelRailRecord& r, const WheelRailPatch& w,
+                         double mu);
+
 void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& identity,
                  const WheelRailPatch& w, int k) {
   const ControlDigits& d = r.digits;
@@ -122,7 +127,10 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
     line(os, "");
     line(os, "     XCP(W)      YCP(W)      ZCP(W)");
     line(os, "  " + f4(w.reference_wheel.x) + f4(w.reference_wheel.y) + f4(w.reference_wheel.z));
-    if (r.variable_friction.v != 0) {  // the patch's own coefficients (V=1, 2)
+    if (w.conformal.active) report::write_conformal_diagnostics(os, w);
+    if (!w.conformal.row_friction.empty()) {
+      report::write_row_friction(os, w.conformal);
+    } else if (r.variable_friction.v != 0) {  // the patch's own coefficients (V=1, 2)
       line(os, "");
       line(os, " FRICTION LAW PARAMETERS");
       line(os, "     FSTAT       FKIN");
@@ -134,8 +142,34 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
     line(os, "  " + sig(w.chi_rad) + sig(w.dq_mm) + sig(w.veloc_mm_s) + sig(w.xi) + sig(w.eta) +
                  sig(w.phi_per_mm));
   }
-  const Totals& t = w.solution.totals;
   const double mu = static_friction(r.friction);
+  if (w.conformal.active) {
+    // V=1 prints relative forces unscaled (wheelrail-advanced.md §3.3); otherwise by the
+    // patch's coefficient, as the planar block.
+    const double mu_c = r.variable_friction.v == 1 ? 1.0 : w.friction.static_coefficient;
+    report::write_conformal_forces(os, w, mu_c, r.solver.eps, d.h >= 1);
+  } else {
+    write_planar_forces(os, r, w, mu);
+  }
+  if (d.o >= 2) report::write_statistics(os, identity, w.solution);
+  if (d.o >= 3) {
+    line(os, "");
+    line(os, " FORM OF THE CONTACT, ADHESION AND SLIP-AREA`S:");
+    write_element_division(os, w.solution, d.t, w.chi_rad);
+    if (w.conformal.active) report::write_curved_reference(os, w.conformal);
+  }
+  // S ≥ 1: the subsurface stress summaries of the patch, in its own coordinates.
+  if (d.s >= 1) {
+    CaseRecord with_points = identity;
+    with_points.subsurface = r.subsurface;
+    report::write_subsurface_summaries(os, with_points, w.solution);
+  }
+}
+
+void write_planar_forces(std::ostream& os, const WheelRailRecord& r, const WheelRailPatch& w,
+                         double mu) {
+  const ControlDigits& d = r.digits;
+  const Totals& t = w.solution.totals;
   const double noise = 0.5 * r.solver.eps * t.fn * mu;
   line(os, "");
   line(os, " TOTAL FORCES, TORSIONAL MOMENT, ELASTIC ENERGY, FRICTIONAL POWER");
@@ -152,18 +186,6 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
                sig(filter_small(scale != 0 ? t.fy / scale : 0.0, 0.5 * r.solver.eps)) +
                fmt_sig(12, 6, 4, t.pen) + sig(t.pmax) +
                (d.h >= 1 ? sig(std::max(t.max_temp1, t.max_temp2)) : ""));
-  if (d.o >= 2) report::write_statistics(os, identity, w.solution);
-  if (d.o >= 3) {
-    line(os, "");
-    line(os, " FORM OF THE CONTACT, ADHESION AND SLIP-AREA`S:");
-    write_element_division(os, w.solution, d.t, w.chi_rad);
-  }
-  // S ≥ 1: the subsurface stress summaries of the patch, in its own coordinates.
-  if (d.s >= 1) {
-    CaseRecord with_points = identity;
-    with_points.subsurface = r.subsurface;
-    report::write_subsurface_summaries(os, with_points, w.solution);
-  }
 }
 
 }  // namespace

@@ -1,0 +1,250 @@
+#include "wheelrail/conformal_patch.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rollcontact::wheelrail {
+
+namespace {
+
+/// No wheel above the element (the line leaves the wheel profile): never in contact.
+constexpr double kFarAway = 1e3;
+
+/// Per element (ix fastest): the undeformed distance along the row's own normal (before the
+/// approach is split off) and the rail and wheel points on the patch normal through it.
+struct ElementGeometry {
+  std::vector<double> h;
+  std::vector<Vec3> rail, wheel;
+  std::vector<char> found;
+};
+
+/// The planar machinery of D=2 finds rail and wheel on the line through the curved reference's
+/// point along the patch normal; the gap along the row's normal ñ_i is that one times
+/// cos(α_i − δ) (wheelrail-advanced.md §1.5: locally parallel surfaces, a tilted ruler).
+ElementGeometry element_geometry(const PlacedProfiles& prof, const WheelsetPose& pose,
+                                 const PatchSetup& s, int mx, int my) {
+  const ContactFrame& f = s.frame;
+  const CurvedReference& c = *s.curved;
+  const std::size_t n = static_cast<std::size_t>(mx) * static_cast<std::size_t>(my);
+  ElementGeometry g;
+  g.h.assign(n, kFarAway);
+  g.rail.resize(n);
+  g.wheel.resize(n);
+  g.found.assign(n, 0);
+  for (int j = 0; j < my; ++j) {
+    const std::size_t row = static_cast<std::size_t>(j);
+    const Vec3 on_line = f.origin + dot(c.point[row] - f.origin, f.es) * f.es;
+    double t_rail = 0.0;
+    if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) continue;
+    const double cosine = std::cos(c.alpha[row] - f.delta_rad);
+    double t_wheel = t_rail;
+    CurveHint hint;  // the wheel profile segment, carried along the row
+    for (int i = 0; i < mx; ++i) {
+      const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i)) * f.ex;
+      if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel, &hint)) {
+        t_wheel = t_rail;
+        continue;
+      }
+      const std::size_t e = row * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
+      g.h[e] = (t_rail - t_wheel) * cosine;
+      g.rail[e] = point + t_rail * f.en;
+      g.wheel[e] = point + t_wheel * f.en;
+      g.found[e] = 1;
+    }
+  }
+  return g;
+}
+
+/// Share of the wheel in the mid-plane's velocity: f_r = (1−ν₁)G₂ / ((1−ν₁)G₂ + (1−ν₂)G₁).
+double rail_share(const model::Bodies& b) {
+  const double a = (1.0 - b.body1.poisson_ratio) * b.body2.shear_modulus_N_mm2;
+  const double c = (1.0 - b.body2.poisson_ratio) * b.body1.shear_modulus_N_mm2;
+  return a + c > 0.0 ? a / (a + c) : 0.5;
+}
+
+/// Rigid slip per element relative to V (wheelrail-advanced.md §1.6 steps 1–5): the material
+/// velocities of rail point P and wheel point Q relative to the contact (the track frame moves
+/// with the wheelset at VS), resolved in the row's frame (x, s̃_i, ñ_i); in the (x, ñ) plane
+/// each is taken along the mean flow of the two (the mid-plane), so that the wheel's material
+/// running down into the contact does not count as longitudinal slip.
+std::vector<SlipSample> element_slip(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                                     const WheelsetPose& pose, const PatchSetup& s,
+                                     const ElementGeometry& g, int mx, int my) {
+  const PatchKinematics& k = s.kinematics;
+  const double sign_chi = std::cos(k.chi_rad) >= 0.0 ? 1.0 : -1.0;
+  const double fr = rail_share(p.patch.bodies);
+  const Vec3 frame{p.motion.vs_mm_s, 0.0, 0.0};
+  const Vec3 ex{1.0, 0.0, 0.0};
+  std::vector<SlipSample> w(g.h.size());
+  for (int j = 0; j < my; ++j) {
+    const std::size_t row = static_cast<std::size_t>(j);
+    const Vec3 es = s.curved->tangent(row), en = s.curved->inward_normal(row);
+    for (int i = 0; i < mx; ++i) {
+      const std::size_t e = row * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
+      if (!g.found[e]) continue;
+      const Vec3 vp = rail_point_velocity(p, prof, g.rail[e]) - frame;
+      const Vec3 vq = wheel_point_motion(p, pose, prof, g.wheel[e]).v - frame;
+      const double px = dot(vp, ex), pn = dot(vp, en), qx = dot(vq, ex), qn = dot(vq, en);
+      const double mid_x = fr * px + (1.0 - fr) * qx, mid_n = fr * pn + (1.0 - fr) * qn;
+      const double len = std::hypot(mid_x, mid_n);
+      const double ux = len > 0.0 ? mid_x / len : -sign_chi, un = len > 0.0 ? mid_n / len : 0.0;
+      const double along_p = -sign_chi * (px * ux + pn * un);
+      const double along_q = -sign_chi * (qx * ux + qn * un);
+      const double v = k.veloc_mm_s >= 1e-6 ? k.veloc_mm_s : 1.0;
+      w[e].wx = (along_p - along_q) / v;
+      w[e].wy = dot(vp - vq, es) / v;
+    }
+  }
+  return w;
+}
+
+}  // namespace
+
+PatchKinematics fit_average_creepages(const std::vector<SlipSample>& samples) {
+  PatchKinematics k;
+  if (samples.empty()) return k;
+  double xm = 0.0, ym = 0.0, d2 = 0.0, wx = 0.0, wy = 0.0, wz = 0.0;
+  for (const SlipSample& q : samples) {
+    xm += q.x;
+    ym += q.y;
+    d2 += q.x * q.x + q.y * q.y;
+    wx += q.wx;
+    wy += q.wy;
+    wz += q.x * q.wy - q.y * q.wx;
+  }
+  const double n = static_cast<double>(samples.size());
+  xm /= n, ym /= n, d2 /= n, wx /= n, wy /= n, wz /= n;
+  const double den = d2 - xm * xm - ym * ym;
+  if (!(den >= 1e-12)) return k;
+  k.phi_per_mm = (wz + ym * wx - xm * wy) / den;
+  k.xi = wx + ym * k.phi_per_mm;
+  k.eta = wy - xm * k.phi_per_mm;
+  return k;
+}
+
+void setup_conformal_patch(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                           const WheelsetPose& pose, const ContactRegion& region, PatchSetup& s,
+                           std::vector<std::string>& warnings) {
+  s.frame = contact_frame(region);
+  s.dx_mm = p.search.dx_mm;
+  s.ds_mm = p.search.ds_mm;
+  int mx = 0, my = 0;
+  // CONTACT allows 1.2·NPOT_MAX for D=4: the curved reference's 20 % slack.
+  const double limit = 1.2 * p.search.max_elements;
+  for (int doubling = 0;; ++doubling) {
+    s.curved = curved_reference(prof, pose, region, s.ds_mm);
+    const GridAxis ax =
+        cover_axis(region.x_min - region.reference.x, region.x_max - region.reference.x, s.dx_mm);
+    s.ix0 = ax.first;
+    s.iy0 = s.curved->k_first;
+    mx = ax.count;
+    my = static_cast<int>(s.curved->rows());
+    if (static_cast<double>(mx) * my < limit || doubling > 20) break;
+    s.dx_mm *= 2.0;
+    s.ds_mm *= 2.0;
+    warnings.push_back(fmt::format(
+        "the conformal patch grid would have {} elements, more than 1.2·NPOT_MAX = {:g}: DX, DS "
+        "doubled to {:g}, {:g} mm",
+        static_cast<long>(mx) * my, limit, s.dx_mm, s.ds_mm));
+  }
+  model::PatchProblem& q = s.problem;
+  q.potential = {};
+  q.potential.ipotcn = 1;
+  q.potential.mx = mx;
+  q.potential.my = my;
+  q.potential.values = {(s.ix0 - 0.5) * s.dx_mm, (s.iy0 - 0.5) * s.ds_mm, s.dx_mm, s.ds_mm};
+  ElementGeometry g = element_geometry(prof, pose, s, mx, my);
+  const double h_min = *std::min_element(g.h.begin(), g.h.end());
+  s.pen_mm = -h_min;
+  q.gap = {};
+  q.gap.ibase = 9;
+  q.gap.iplan = 1;
+  q.gap.values = g.h;
+  for (double& v : q.gap.values)
+    if (v < kFarAway) v -= h_min;
+
+  // Kinematics (§1.6 step 3): V = VS on a track, χ from its sign; δq as for D=2.
+  PatchKinematics& k = s.kinematics;
+  k = {};
+  const double v = model::rolling_speed_mm_s(p);
+  k.veloc_mm_s = std::abs(v);
+  k.chi_rad = v < 0.0 ? std::numbers::pi : 0.0;
+  k.dq_mm = p.search.dq_rel * p.search.dx_mm;
+  const model::TangentialKind kind = p.patch.tangential.kind;
+  if (kind == model::TangentialKind::None) return;
+  std::vector<SlipSample> w = element_slip(p, prof, pose, s, g, mx, my);
+  // Spin arms as the tangential solver takes them: the rolling offset f_φ·δq along χ.
+  const double f = p.patch.rolling.spin_offset_factor;
+  const double off_x = std::cos(k.chi_rad) * k.dq_mm * f, off_y = std::sin(k.chi_rad) * k.dq_mm * f;
+  std::vector<SlipSample> inside;
+  for (int j = 0; j < my; ++j)
+    for (int i = 0; i < mx; ++i) {
+      const std::size_t e =
+          static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
+      w[e].x = s.dx_mm * (s.ix0 + i) + off_x;
+      w[e].y = s.curved->s_tilde(static_cast<std::size_t>(j)) + off_y;
+      if (g.found[e] && g.h[e] < 0.0) inside.push_back(w[e]);
+    }
+  const PatchKinematics fit = fit_average_creepages(inside);
+  k.xi = fit.xi;
+  k.eta = fit.eta;
+  k.phi_per_mm = fit.phi_per_mm;
+  // The remainder stays with the elements, so the total rigid slip is the one computed.
+  std::vector<double>& extra = q.tangential.extra_slip;
+  extra.assign(2 * w.size(), 0.0);
+  for (std::size_t e = 0; e < w.size(); ++e) {
+    if (!g.found[e]) continue;
+    extra[2 * e] = w[e].wx - (k.xi - k.phi_per_mm * w[e].y);
+    extra[2 * e + 1] = w[e].wy - (k.eta + k.phi_per_mm * w[e].x);
+  }
+}
+
+ConformalPatch conformal_forces(const PatchSetup& s, const Solution& sol) {
+  const CurvedReference& c = *s.curved;
+  const ContactFrame& f = s.frame;
+  ConformalPatch out;
+  out.active = true;
+  out.ds_mm = c.ds_mm;
+  out.row0_s_mm = c.s_tilde(0);
+  for (std::size_t i = 0; i < c.rows(); ++i) {
+    out.row_y_mm.push_back(c.point[i].y);
+    out.row_z_mm.push_back(c.point[i].z);
+    out.row_alpha_rad.push_back(c.alpha[i]);
+  }
+  if (sol.pn.empty()) return out;
+  const bool tangential = !sol.px.empty() && !sol.py.empty();
+  const double area = sol.grid.dx * sol.grid.dy;
+  Vec3 m{};
+  for (int iy = 0; iy < sol.grid.my; ++iy) {
+    const std::size_t row = static_cast<std::size_t>(iy);
+    const double d = c.alpha[row] - f.delta_rad, cd = std::cos(d), sd = std::sin(d);
+    // The row's point in the planar frame: the curved grid extruded along x.
+    const double s_p = dot(c.point[row] - f.origin, f.es), n_p = dot(c.point[row] - f.origin, f.en);
+    for (int ix = 0; ix < sol.grid.mx; ++ix) {
+      const std::size_t e = sol.grid.index(ix, iy);
+      const double pn = sol.pn[e];
+      if (pn <= 0.0) continue;
+      const double px = tangential ? sol.px[e] : 0.0, ps = tangential ? sol.py[e] : 0.0;
+      const double x = sol.grid.x_centre(ix);
+      out.tilde_fn += pn;
+      out.tilde_fx += px;
+      out.tilde_fs += ps;
+      const double bx = px, bs = ps * cd - pn * sd, bn = ps * sd + pn * cd;
+      out.bar_fx += bx;
+      out.bar_fs += bs;
+      out.bar_fn += bn;
+      m = m + Vec3{s_p * bn - n_p * bs, n_p * bx - x * bn, x * bs - s_p * bx};
+      if (out.contact_row_first < 0) out.contact_row_first = iy;
+      out.contact_row_last = iy;
+    }
+  }
+  out.tilde_fn *= area, out.tilde_fx *= area, out.tilde_fs *= area;
+  out.bar_fn *= area, out.bar_fx *= area, out.bar_fs *= area;
+  out.moment_planar = {m.x * area, m.y * area, m.z * area};
+  return out;
+}
+
+}  // namespace rollcontact::wheelrail

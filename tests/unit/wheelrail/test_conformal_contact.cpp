@@ -1,0 +1,177 @@
+// Conformal contact (CONTACT's D=4; spec/wheelrail-advanced.md §1): the least-squares average
+// creepages, a tread contact where the curved reference is nearly the tangent plane (D=4 must
+// give D=2's answer), a hollow wheel conforming to a crown (the gap along the local normals
+// carries more load than the planar one), and the Manchester benchmark's flange-root cases of
+// mbench_a22_varfric (c5, c7) through the .inp route against CONTACT's printed numbers.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <variant>
+#include <vector>
+
+#include "format/inp/inp_reader.hpp"
+#include "format/inp/to_wheelrail.hpp"
+#include "rollcontact/wheelrail.hpp"
+#include "support/examples.hpp"
+#include "wheelrail/conformal_patch.hpp"
+#include "wheelrail_problems.hpp"
+
+namespace rollcontact {
+namespace {
+
+TEST(ConformalContact, AverageCreepagesOfARigidFieldAreItsCreepagesExactly) {
+  // w = (ξ − φ·y, η + φ·x) on an off-centre, irregular set of elements.
+  const double xi = 3.1e-3, eta = -1.7e-3, phi = 4.2e-4;
+  std::vector<wheelrail::SlipSample> samples;
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 5 + (i % 3); ++j) {
+      const double x = -2.0 + 0.4 * i + 0.05, y = 1.3 + 0.3 * j;
+      samples.push_back({x, y, xi - phi * y, eta + phi * x});
+    }
+  const wheelrail::PatchKinematics k = wheelrail::fit_average_creepages(samples);
+  EXPECT_NEAR(k.xi, xi, 1e-15);
+  EXPECT_NEAR(k.eta, eta, 1e-15);
+  EXPECT_NEAR(k.phi_per_mm, phi, 1e-15);
+  // One point: no spin can be fitted; nothing at all: zero.
+  EXPECT_EQ(wheelrail::fit_average_creepages({samples.front()}).phi_per_mm, 0.0);
+  EXPECT_EQ(wheelrail::fit_average_creepages({}).xi, 0.0);
+}
+
+/// The crowned rail of the geometry tests under a cylinder, rolling with creepage: VPITCH 0.4 %
+/// below free rolling (ξ ≈ −4e-3), a yaw of 2 mrad (η), μ = 0.3.
+model::WheelRailProblem rolling_tread(bool conformal) {
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.motion.vpitch_rad_s *= 1.004;
+  p.motion.yaw_rad = 0.002;
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 50000.0;
+  p.search.conformal = conformal;
+  return p;
+}
+
+TEST(ConformalContact, TreadContactOnALargeCrownEqualsThePlanarAnswer) {
+  WheelsetSolver planar_solver, conformal_solver;
+  const WheelRailSolution planar = planar_solver.solve(rolling_tread(false));
+  const WheelRailSolution conformal = conformal_solver.solve(rolling_tread(true));
+  ASSERT_TRUE(planar.converged) << planar.message;
+  ASSERT_TRUE(conformal.converged) << conformal.message;
+  ASSERT_EQ(planar.patches.size(), 1U);
+  ASSERT_EQ(conformal.patches.size(), 1U);
+  const WheelRailPatch& a = planar.patches[0];
+  const WheelRailPatch& b = conformal.patches[0];
+  ASSERT_TRUE(b.conformal.active);
+  EXPECT_FALSE(a.conformal.active);
+  // The curved reference: one row per DS sample, midway between the crown (turning 1/300 rad
+  // per mm) and the cylinder (not turning), so its normal turns by 1/600 rad per mm.
+  const ConformalPatch& c = b.conformal;
+  ASSERT_EQ(c.row_alpha_rad.size(), static_cast<std::size_t>(b.solution.grid.my));
+  for (std::size_t i = 0; i < c.row_alpha_rad.size(); ++i) {
+    const double s = c.row0_s_mm + c.ds_mm * static_cast<double>(i);
+    EXPECT_NEAR(c.row_alpha_rad[i] - b.contact_angle_rad, s / 600.0, 2e-5) << "row " << i;
+  }
+  // Over a contact 2×6 mm wide the rows turn by at most ±0.01 rad: bar and tilde agree to
+  // 1 − cos 0.01 = 5e-5.
+  EXPECT_NEAR(c.bar_fn, c.tilde_fn, 5e-5 * c.tilde_fn);
+  // The average creepages are the planar creepages (rigid slip of the same motion) within what
+  // the curvature of the crown and the wheel's rotation within the patch add. D=4 divides by
+  // V = VS, D=2 by the mean of VS and the rolling speed (0.2 % more here): compare the slip
+  // velocities.
+  EXPECT_NEAR(b.veloc_mm_s, 2000.0, 1e-9);
+  EXPECT_NEAR(b.xi * b.veloc_mm_s, a.xi * a.veloc_mm_s, 2e-3);  // mm/s, of 8 mm/s
+  EXPECT_NEAR(b.eta * b.veloc_mm_s, a.eta * a.veloc_mm_s, 2e-3);
+  EXPECT_NEAR(b.phi_per_mm * b.veloc_mm_s, a.phi_per_mm * a.veloc_mm_s, 2e-3);
+  // Forces: the same wheelset height and forces within 0.2 %.
+  EXPECT_NEAR(conformal.z_ws_mm, planar.z_ws_mm, 2e-4);
+  EXPECT_NEAR(conformal.force_tr.x, planar.force_tr.x, 2e-3 * std::abs(planar.force_tr.x));
+  EXPECT_NEAR(conformal.force_tr.y, planar.force_tr.y, 2e-3 * std::abs(planar.force_tr.y) + 2.0);
+  EXPECT_NEAR(conformal.force_tr.z, 50000.0, 50.0);
+}
+
+TEST(ConformalContact, HollowWheelOnACrownCarriesLessThanThePlanarGapSays) {
+  // Crown of 20 mm radius in a hollow wheel of 20.5 mm profile radius, pushed 0.05 mm into it:
+  // at the angle θ around the crown the surfaces are (to first order) −0.05·cos θ +
+  // 0.5·(1 − cos θ) apart along their common normal, and that divided by cos θ measured
+  // vertically, as the planar approach does. Both vanish at the same θ (25°), but the planar
+  // interpenetration is deeper by 1/cos θ (up to 10 %): the conformal contact carries less at
+  // the same position. The curved reference follows the crown's normal (α = asin(y/20.25) at
+  // the mid radius) and, the problem being symmetric, FS is zero.
+  auto problem = [](bool conformal) {
+    model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+    const double rr = 20.0, rw = 20.5;
+    p.rail.points = test_support::sampled_profile(
+        [rr](double y) { return rr - std::sqrt(rr * rr - y * y); }, -15.0, 15.0, 0.1, false);
+    p.wheel.points = test_support::sampled_profile(
+        [rw](double y) { return rw - std::sqrt(rw * rw - y * y); }, -18.0, 18.0, 0.1, true);
+    p.motion.z_mm = 0.05;
+    p.search.conformal = conformal;
+    return p;
+  };
+  const WheelRailSolution planar = WheelsetSolver().solve(problem(false));
+  const WheelRailSolution conformal = WheelsetSolver().solve(problem(true));
+  ASSERT_EQ(planar.patches.size(), 1U);
+  ASSERT_EQ(conformal.patches.size(), 1U);
+  const ConformalPatch& c = conformal.patches[0].conformal;
+  ASSERT_TRUE(c.active);
+  EXPECT_LT(conformal.force_tr.z, 0.99 * planar.force_tr.z);  // measured 0.934
+  EXPECT_GT(conformal.force_tr.z, 0.90 * planar.force_tr.z);
+  EXPECT_NEAR(c.bar_fs, 0.0, 1e-6 * c.tilde_fn);
+  EXPECT_LT(c.bar_fn, c.tilde_fn);  // the rows' normals fan out around the crown
+  for (std::size_t i = 0; i < c.row_y_mm.size(); ++i)
+    EXPECT_NEAR(c.row_alpha_rad[i], std::asin((c.row_y_mm[i] - 750.0) / 20.25), 2e-3)
+        << "row " << i;
+}
+
+TEST(ConformalContact, FlangeRootCasesOfTheBenchmarkGiveContactsNumbers) {
+  // mbench_a22_varfric case 5 (V=1: friction per row by its inclination) and case 7 (V=2) at
+  // y = 5.5 mm, yaw 13.2 mrad: CONTACT's printed curved reference, average creepages and
+  // bar/tilde forces.
+  REQUIRE_EXAMPLES();
+  const std::filesystem::path dir{ROLLCONTACT_EXAMPLES_DIR};
+  const auto cases = format::read_input_cases(dir / "mbench_a22_varfric.inp");
+  WheelsetSolver solver;
+  for (std::size_t k = 0; k < 4; ++k) {  // the cases before set the sequence's state
+    auto record = std::get<format::WheelRailRecord>(cases.at(k));
+    record.subsurface = {};
+    model::WheelRailProblem p = format::to_wheelrail_problem(record);
+    p.validated_only = false;
+    (void)solver.solve(p);
+  }
+  const WheelRailSolution s =
+      solver.solve(format::to_wheelrail_problem(std::get<format::WheelRailRecord>(cases.at(4))));
+  ASSERT_TRUE(s.converged) << s.message;
+  ASSERT_EQ(s.patches.size(), 1U);
+  const WheelRailPatch& w = s.patches[0];
+  const ConformalPatch& c = w.conformal;
+  ASSERT_TRUE(c.active);
+  ASSERT_EQ(c.row_y_mm.size(), 17U);  // CONTACT: 17 points, rows 6-12 in contact
+  EXPECT_EQ(c.contact_row_first, 5);
+  EXPECT_EQ(c.contact_row_last, 11);
+  // CONTACT's table: row 1 (724.6342, 3.9166, -0.4357), row 17 (727.6474, 2.8524, -0.2663).
+  EXPECT_NEAR(c.row_y_mm.front(), 724.6342, 2e-4);
+  EXPECT_NEAR(c.row_z_mm.front(), 3.9166, 2e-4);
+  EXPECT_NEAR(c.row_alpha_rad.front(), -0.4357, 1e-4);
+  EXPECT_NEAR(c.row_y_mm.back(), 727.6474, 2e-4);
+  EXPECT_NEAR(c.row_alpha_rad.back(), -0.2663, 1e-4);
+  ASSERT_EQ(c.row_friction.size(), 17U);
+  EXPECT_NEAR(c.row_friction.front(), 0.2000, 1e-4);
+  EXPECT_NEAR(c.row_friction.back(), 0.2474, 1e-4);
+  // CKSI 4.409E-03, CETA 1.403E-02, CPHI 7.151E-04; VELOC = VS.
+  EXPECT_NEAR(w.xi, 4.409e-3, 1e-6);
+  EXPECT_NEAR(w.eta, 1.403e-2, 1e-5);
+  EXPECT_NEAR(w.phi_per_mm, 7.151e-4, 1e-6);
+  EXPECT_NEAR(w.veloc_mm_s, 2000.0, 1e-9);
+  // BAR_FN 9897, BAR_FX −613.9, BAR_FS −1991, TILDE_FN 9903 within the module-1 tolerance
+  // (5e-3 relative + 2e-4·FZ).
+  auto tol = [](double f) { return 5e-3 * std::abs(f) + 2.0; };
+  EXPECT_NEAR(c.bar_fn, 9897.0, tol(9897.0));
+  EXPECT_NEAR(c.bar_fx, -613.9, tol(613.9));
+  EXPECT_NEAR(c.bar_fs, -1991.0, tol(1991.0));
+  EXPECT_NEAR(c.tilde_fn, 9903.0, tol(9903.0));
+  EXPECT_NEAR(s.force_tr.y, 1387.0, tol(1387.0));
+}
+
+}  // namespace
+}  // namespace rollcontact
