@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import rollcontact as rc
-from conftest import EXAMPLES
+from conftest import EXAMPLES, REPO_EXAMPLES
 
 
 def test_manchester_benchmark_case_from_python(cli, tmp_path):
@@ -98,3 +98,25 @@ def test_wheelrail_case_from_a_python_dict(cli, tmp_path):
     solver = rc.Solver()
     lateral = [solver.solve(c, base_dir=tmp_path)["patches"][0]["reference_tr"][1] for c in ys]
     assert lateral[0] > lateral[1] > lateral[2]  # the contact moves towards the flange
+
+
+def test_conformal_patch_from_python(tmp_path):
+    """examples/conformal_flange_root.inp: case 2 (D=4) carries its curved reference, one row per
+    grid row, and its track force is the BAR force turned by the contact angle."""
+    shutil.copytree(REPO_EXAMPLES / "profiles", tmp_path / "profiles")
+    shutil.copy(REPO_EXAMPLES / "conformal_flange_root.inp", tmp_path)
+    planar, conformal = rc.run(tmp_path / "conformal_flange_root.inp", tmp_path)
+    assert "conformal" not in planar["patches"][0]
+    patch = conformal["patches"][0]
+    c = patch["conformal"]
+    assert len(c["row_alpha"]) == patch["grid"]["my"] == len(c["row_y"])
+    fx, fs, fn = c["bar_force"]
+    d = patch["contact_angle"]
+    assert conformal["force_tr"][1] == pytest.approx(fs * np.cos(d) - fn * np.sin(d), rel=1e-12)
+    assert conformal["force_tr"][2] == pytest.approx(fn * np.cos(d) + fs * np.sin(d), rel=1e-12)
+    # The tilde normal force is the pressure integrated on the curvilinear grid.
+    g = patch["grid"]
+    assert patch["pn"].sum() * g["dx"] * g["dy"] == pytest.approx(c["tilde_force"][2], rel=1e-9)
+    # The rows turn monotonically with the flange root, through the reference angle.
+    assert np.all(np.diff(c["row_alpha"]) > 0)
+    assert min(c["row_alpha"]) < d < max(c["row_alpha"])

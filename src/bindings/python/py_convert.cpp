@@ -174,6 +174,19 @@ py::dict wheelrail_to_dict(WheelRailSolution solution) {
     p["phi"] = w.phi_per_mm;
     p["force_tr"] = std::vector<double>{w.force_tr.x, w.force_tr.y, w.force_tr.z};
     p["force_ws"] = std::vector<double>{w.force_ws.x, w.force_ws.y, w.force_ws.z};
+    if (w.conformal.active) {  // D=4: the curved reference and both force integrals
+      const ConformalPatch& c = w.conformal;
+      py::dict cd;
+      cd["bar_force"] = std::vector<double>{c.bar_fx, c.bar_fs, c.bar_fn};
+      cd["tilde_force"] = std::vector<double>{c.tilde_fx, c.tilde_fs, c.tilde_fn};
+      cd["moments_planar"] =
+          std::vector<double>{c.moment_planar.x, c.moment_planar.y, c.moment_planar.z};
+      cd["row_y"] = c.row_y_mm;
+      cd["row_z"] = c.row_z_mm;
+      cd["row_alpha"] = c.row_alpha_rad;
+      cd["row_friction"] = c.row_friction;
+      p["conformal"] = cd;
+    }
     patches.append(p);
   }
   d["patches"] = patches;

@@ -173,5 +173,44 @@ TEST(ConformalContact, FlangeRootCasesOfTheBenchmarkGiveContactsNumbers) {
   EXPECT_NEAR(s.force_tr.y, 1387.0, tol(1387.0));
 }
 
+TEST(ConformalContact, LeftWheelMirrorsTheRightOne) {
+  // The mirror image of a right-wheel case on a left wheel (inputs in track coordinates) gives
+  // the right wheel's conformal patch mirrored: lateral positions, angles, FS and the lateral
+  // forces change sign, everything else is bit for bit the same.
+  model::WheelRailProblem right = test_support::crowned_rail_problem(300.0, 0.05);
+  right.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  right.vertical = model::VerticalLoading::Force;
+  right.motion.fz_N = 10000.0;
+  right.motion.y_mm = 1.5;
+  right.motion.yaw_rad = 0.004;
+  right.motion.vy_mm_s = 3.0;
+  right.search.conformal = true;
+  model::WheelRailProblem left = right;
+  left.side = model::WheelSide::Left;
+  left.motion.y_mm = -right.motion.y_mm;
+  left.motion.yaw_rad = -right.motion.yaw_rad;
+  left.motion.vy_mm_s = -right.motion.vy_mm_s;
+  left.track.rail_y0_mm = -right.track.rail_y0_mm;
+  const WheelRailSolution r = WheelsetSolver().solve(right);
+  const WheelRailSolution l = WheelsetSolver().solve(left);
+  ASSERT_EQ(r.patches.size(), 1U);
+  ASSERT_EQ(l.patches.size(), 1U);
+  EXPECT_EQ(l.force_tr.x, r.force_tr.x);
+  EXPECT_EQ(l.force_tr.y, -r.force_tr.y);
+  EXPECT_EQ(l.force_tr.z, r.force_tr.z);
+  const ConformalPatch &a = r.patches[0].conformal, &b = l.patches[0].conformal;
+  ASSERT_TRUE(b.active);
+  EXPECT_EQ(b.bar_fn, a.bar_fn);
+  EXPECT_EQ(b.bar_fs, -a.bar_fs);
+  EXPECT_EQ(b.moment_planar.z, -a.moment_planar.z);
+  ASSERT_EQ(b.row_y_mm.size(), a.row_y_mm.size());
+  for (std::size_t i = 0; i < a.row_y_mm.size(); ++i) {
+    EXPECT_EQ(b.row_y_mm[i], -a.row_y_mm[i]);
+    EXPECT_EQ(b.row_alpha_rad[i], -a.row_alpha_rad[i]);
+  }
+  EXPECT_EQ(l.patches[0].eta, -r.patches[0].eta);
+  EXPECT_NE(r.patches[0].eta, 0.0);
+}
+
 }  // namespace
 }  // namespace rollcontact
