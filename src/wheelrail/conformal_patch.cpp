@@ -44,13 +44,17 @@ ElementGeometry element_geometry(const PlacedProfiles& prof, const WheelsetPose&
     CurveHint hint;  // the wheel profile segment, carried along the row
     for (int i = 0; i < mx; ++i) {
       const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i)) * f.ex;
+      // A prismatic rail is the same all along a row; a roller or sliced rail is not.
+      double t_here = t_rail;
+      if (prof.rail_varies_along_x() && !rail_surface_along(prof, point, f.en, t_rail, t_here))
+        continue;
       if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel, &hint)) {
-        t_wheel = t_rail;
+        t_wheel = t_here;
         continue;
       }
       const std::size_t e = row * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
-      g.h[e] = (t_rail - t_wheel) * cosine;
-      g.rail[e] = point + t_rail * f.en;
+      g.h[e] = (t_here - t_wheel) * cosine;
+      g.rail[e] = point + t_here * f.en;
       g.wheel[e] = point + t_wheel * f.en;
       g.found[e] = 1;
     }
@@ -65,18 +69,62 @@ double rail_share(const model::Bodies& b) {
   return a + c > 0.0 ? a / (a + c) : 0.5;
 }
 
-/// Rigid slip per element relative to V (wheelrail-advanced.md §1.6 steps 1–5): the material
-/// velocities of rail point P and wheel point Q relative to the contact (the track frame moves
-/// with the wheelset at VS), resolved in the row's frame (x, s̃_i, ñ_i); in the (x, ñ) plane
-/// each is taken along the mean flow of the two (the mid-plane), so that the wheel's material
-/// running down into the contact does not count as longitudinal slip.
-std::vector<SlipSample> element_slip(const model::WheelRailProblem& p, const PlacedProfiles& prof,
-                                     const WheelsetPose& pose, const PatchSetup& s,
-                                     const ElementGeometry& g, int mx, int my) {
+/// Material velocities of the rail (P) and wheel (Q) points of every element relative to the
+/// contact (wheelrail-advanced.md §1.6 step 1): on a track the contact moves with the wheelset
+/// at VS, on a roller rig it stays where it is.
+struct ElementVelocities {
+  std::vector<Vec3> rail, wheel;
+};
+ElementVelocities element_velocities(const model::WheelRailProblem& p, const PlacedProfiles& prof,
+                                     const WheelsetPose& pose, const ElementGeometry& g) {
+  const Vec3 frame{p.roller.enabled ? 0.0 : p.motion.vs_mm_s, 0.0, 0.0};
+  ElementVelocities v;
+  v.rail.resize(g.h.size());
+  v.wheel.resize(g.h.size());
+  for (std::size_t e = 0; e < g.h.size(); ++e) {
+    if (!g.found[e]) continue;
+    const Vec3 vp = p.roller.enabled ? roller_point_velocity(p, prof, g.rail[e])
+                                     : rail_point_velocity(p, prof, g.rail[e]);
+    v.rail[e] = vp - frame;
+    v.wheel[e] = wheel_point_motion(p, pose, prof, g.wheel[e]).v - frame;
+  }
+  return v;
+}
+
+/// V and χ (§1.6 step 3): VS on a track; on a roller the mean material speed through the
+/// element nearest the reference point; χ = π when the material runs towards +x.
+void set_rolling_speed(const model::WheelRailProblem& p, const PatchSetup& s,
+                       const ElementGeometry& g, const ElementVelocities& v, int mx, int my,
+                       PatchKinematics& k) {
+  double speed = p.motion.vs_mm_s;
+  if (p.roller.enabled) {
+    double best = 1e300;
+    speed = 0.0;
+    for (int j = 0; j < my; ++j)
+      for (int i = 0; i < mx; ++i) {
+        const std::size_t e = static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) +
+                              static_cast<std::size_t>(i);
+        const double x = s.dx_mm * (s.ix0 + i), y = s.curved->s_tilde(static_cast<std::size_t>(j));
+        if (!g.found[e] || x * x + y * y >= best) continue;
+        best = x * x + y * y;
+        speed = -0.5 * (v.rail[e].x + v.wheel[e].x);
+      }
+  }
+  k.veloc_mm_s = std::abs(speed);
+  k.chi_rad = speed < 0.0 ? std::numbers::pi : 0.0;
+}
+
+/// Rigid slip per element relative to V (§1.6 steps 2–5): the velocities resolved in the row's
+/// frame (x, s̃_i, ñ_i); in the (x, ñ) plane each is taken along the mean flow of the two (the
+/// mid-plane), so that the wheel's material running down into the contact does not count as
+/// longitudinal slip.
+std::vector<SlipSample> element_slip(const model::WheelRailProblem& p, const PatchSetup& s,
+                                     const ElementGeometry& g, const ElementVelocities& v, int mx,
+                                     int my) {
   const PatchKinematics& k = s.kinematics;
   const double sign_chi = std::cos(k.chi_rad) >= 0.0 ? 1.0 : -1.0;
   const double fr = rail_share(p.patch.bodies);
-  const Vec3 frame{p.motion.vs_mm_s, 0.0, 0.0};
+  const double speed = k.veloc_mm_s >= 1e-6 ? k.veloc_mm_s : 1.0;
   const Vec3 ex{1.0, 0.0, 0.0};
   std::vector<SlipSample> w(g.h.size());
   for (int j = 0; j < my; ++j) {
@@ -85,17 +133,15 @@ std::vector<SlipSample> element_slip(const model::WheelRailProblem& p, const Pla
     for (int i = 0; i < mx; ++i) {
       const std::size_t e = row * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
       if (!g.found[e]) continue;
-      const Vec3 vp = rail_point_velocity(p, prof, g.rail[e]) - frame;
-      const Vec3 vq = wheel_point_motion(p, pose, prof, g.wheel[e]).v - frame;
+      const Vec3 vp = v.rail[e], vq = v.wheel[e];
       const double px = dot(vp, ex), pn = dot(vp, en), qx = dot(vq, ex), qn = dot(vq, en);
       const double mid_x = fr * px + (1.0 - fr) * qx, mid_n = fr * pn + (1.0 - fr) * qn;
       const double len = std::hypot(mid_x, mid_n);
       const double ux = len > 0.0 ? mid_x / len : -sign_chi, un = len > 0.0 ? mid_n / len : 0.0;
       const double along_p = -sign_chi * (px * ux + pn * un);
       const double along_q = -sign_chi * (qx * ux + qn * un);
-      const double v = k.veloc_mm_s >= 1e-6 ? k.veloc_mm_s : 1.0;
-      w[e].wx = (along_p - along_q) / v;
-      w[e].wy = dot(vp - vq, es) / v;
+      w[e].wx = (along_p - along_q) / speed;
+      w[e].wy = dot(vp - vq, es) / speed;
     }
   }
   return w;
@@ -166,16 +212,15 @@ void setup_conformal_patch(const model::WheelRailProblem& p, const PlacedProfile
   for (double& v : q.gap.values)
     if (v < kFarAway) v -= h_min;
 
-  // Kinematics (§1.6 step 3): V = VS on a track, χ from its sign; δq as for D=2.
+  // Kinematics (§1.6 step 3); δq as for D=2.
   PatchKinematics& k = s.kinematics;
   k = {};
-  const double v = model::rolling_speed_mm_s(p);
-  k.veloc_mm_s = std::abs(v);
-  k.chi_rad = v < 0.0 ? std::numbers::pi : 0.0;
   k.dq_mm = p.search.dq_rel * p.search.dx_mm;
+  const ElementVelocities v = element_velocities(p, prof, pose, g);
+  set_rolling_speed(p, s, g, v, mx, my, k);
   const model::TangentialKind kind = p.patch.tangential.kind;
   if (kind == model::TangentialKind::None) return;
-  std::vector<SlipSample> w = element_slip(p, prof, pose, s, g, mx, my);
+  std::vector<SlipSample> w = element_slip(p, s, g, v, mx, my);
   // Spin arms as the tangential solver takes them: the rolling offset f_φ·δq along χ.
   const double f = p.patch.rolling.spin_offset_factor;
   const double off_x = std::cos(k.chi_rad) * k.dq_mm * f, off_y = std::sin(k.chi_rad) * k.dq_mm * f;

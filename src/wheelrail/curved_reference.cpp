@@ -19,11 +19,20 @@ Vec3 unit(Vec3 v) {
   return n > 0.0 ? (1.0 / n) * v : v;
 }
 
-/// The rail at arc length s of its placed profile: outward normal (0, dz/ds, −dy/ds) (upwards
-/// for a rail whose profile runs towards +y).
-Sample rail_sample(const PlacedProfiles& prof, double s) {
+/// The rail at arc length s of its placed profile, in the plane x = x_ref: outward normal
+/// (0, dz/ds, −dy/ds) (upwards for a rail whose profile runs towards +y). A roller (or a rail
+/// varying along the track) is evaluated on its 3-D surface there: a roller's section at x_ref
+/// lies lower (higher inside a ring) than its principal profile, its normal tilts along x.
+Sample rail_sample(const PlacedProfiles& prof, double s, double x_ref) {
   const CurvePoint c = prof.rail().at_s(s);
-  return {{0.0, prof.rail_y_mm() + c.y, prof.rail_z_mm() + c.z}, {0.0, c.dz_ds, -c.dy_ds}};
+  const double y = prof.rail_y_mm() + c.y;
+  if (!prof.rail_varies_along_x())
+    return {{x_ref, y, prof.rail_z_mm() + c.z}, {0.0, c.dz_ds, -c.dy_ds}};
+  const RailSurfacePoint r = prof.rail_surface_at(x_ref, y);
+  // ∇(z(x, y) − z) written with the tangent: (z_x·dy/ds, z_y·dy/ds, −dy/ds), z_y·dy/ds the
+  // section's dz/ds scaled as the surface's slope is.
+  const double scale = c.dz_dy != 0.0 ? r.dz_dy / c.dz_dy : 1.0;
+  return {{x_ref, y, r.z}, unit(Vec3{r.dz_dx * c.dy_ds, c.dz_ds * scale, -c.dy_ds})};
 }
 
 /// The wheel at arc length s of its profile, on the body of revolution, turned about the axle
@@ -81,7 +90,7 @@ CurvedReference curved_reference(const PlacedProfiles& prof, const WheelsetPose&
   const int i_ref = -k_sta;
   for (int i = 0; i < n; ++i) {
     const double sc = ds * (k_sta + i);
-    const Sample rail = rail_sample(prof, s_ref + sc);
+    const Sample rail = rail_sample(prof, s_ref + sc, x_ref);
     const Sample wheel = wheel_sample(prof, pose, s_w_ref - sc, x_ref);
     const Vec3 m = 0.5 * (rail.point + wheel.point);
     const Vec3 nb = 0.5 * (rail.normal - wheel.normal);

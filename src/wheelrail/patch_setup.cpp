@@ -217,6 +217,16 @@ Vec3 rail_point_velocity(const model::WheelRailProblem& p, const PlacedProfiles&
          cross(Vec3{0.0, 0.0, yaw_rate_track}, P);
 }
 
+Vec3 roller_point_velocity(const model::WheelRailProblem& p, const PlacedProfiles& prof, Vec3 P) {
+  const model::RailState& rs = p.rail_state;
+  const Vec3 axle{0.0, 0.0, prof.roller_axle_z_mm()};
+  const double rpitch = p.roller.pitch_rate_rad_s;
+  const double yaw_rate = -std::abs(P.z - axle.z) * rpitch * p.track.curvature_per_mm;
+  const Vec3 rail_origin{0.0, prof.rail_y_mm(), prof.rail_z_mm()};
+  return cross(Vec3{0.0, rpitch, yaw_rate}, P - axle) + Vec3{0.0, rs.vy_mm_s, rs.vz_mm_s} +
+         cross(Vec3{rs.vroll_rad_s, 0.0, 0.0}, P - rail_origin);
+}
+
 namespace {
 
 /// T=1 (shifts): the velocity line holds the increments of one step, so the "velocity"
@@ -243,11 +253,8 @@ PatchKinematics roller_kinematics(const model::WheelRailProblem& p, const Wheels
   const Vec3 axle{0.0, 0.0, prof.roller_axle_z_mm()};
   const double rpitch = p.roller.pitch_rate_rad_s;
   const double yaw_rate = -std::abs(P.z - axle.z) * rpitch * p.track.curvature_per_mm;
-  const Vec3 rail_origin{0.0, prof.rail_y_mm(), prof.rail_z_mm()};
   const Vec3 omega_P{rs.vroll_rad_s, rpitch, yaw_rate};
-  const Vec3 v_P = cross(Vec3{0.0, rpitch, yaw_rate}, P - axle) +
-                   Vec3{0.0, rs.vy_mm_s, rs.vz_mm_s} +
-                   cross(Vec3{rs.vroll_rad_s, 0.0, 0.0}, P - rail_origin);
+  const Vec3 v_P = roller_point_velocity(p, prof, P);
   const WheelPointMotion q = wheel_point_motion(p, pose, prof, P + pen_mm * f.en);
   const Vec3 v_Q = q.v, omega_Q = q.omega;
   PatchKinematics k;

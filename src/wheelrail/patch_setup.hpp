@@ -74,6 +74,12 @@ WheelPointMotion wheel_point_motion(const model::WheelRailProblem& problem,
 Vec3 rail_point_velocity(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
                          Vec3 P);
 
+/// Velocity of a roller's material point P [track, mm/s]: its rotation RPITCH about the axle
+/// (yawing at −r·RPITCH·CURV, r the distance from the axle) and the rail deviation rates
+/// (wheelrail-advanced.md §4.3).
+Vec3 roller_point_velocity(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
+                           Vec3 P);
+
 /// Element centres at multiples of h covering [lo, hi] plus one guard element per side, their
 /// number rounded up to a multiple of 8 (kernels and FFT plans are reused by size): centre k of
 /// the axis lies at (first + k)·h.

@@ -70,13 +70,12 @@ CaseRecord settings_record(const WheelRailRecord& r) {
 
 void check_supported(const WheelRailRecord& r) {
   const ControlDigits& d = r.digits;
-  // D=4 (conformal contact) solves each patch on a curved reference surface, on a track, for
-  // static and steady-rolling cases (wheelrail-advanced.md §1); D=3, 6-9 only choose CONTACT's
-  // search variant and are solved with D=2 or D=5 (contact_search_note()).
+  // D=4 (conformal contact) solves each patch on a curved reference surface, on a track or a
+  // roller rig, for static and steady-rolling cases (wheelrail-advanced.md §1); D=3, 6-9 only
+  // choose CONTACT's search variant and are solved with D=2 or D=5 (contact_search_note()).
   if (r.discretisation.method == 4) {
-    if (r.is_roller()) not_supported("conformal contact (D=4) on a roller rig");
-    if (r.wheel.sliced || r.rail.sliced)
-      not_supported("conformal contact (D=4) with variable profiles (slices files)");
+    if (r.wheel.sliced)
+      not_supported("conformal contact (D=4) with variable wheel profiles (wheel slices files)");
     if (d.t == 1 || d.t == 2)
       not_supported(
           fmt::format("conformal contact (D=4) with T={} (shifts and transient rolling "

@@ -212,5 +212,67 @@ TEST(ConformalContact, LeftWheelMirrorsTheRightOne) {
   EXPECT_NE(r.patches[0].eta, 0.0);
 }
 
+TEST(ConformalContact, OnARollerOfHugeRadiusItIsTheTrack) {
+  // The rolling tread of above on a roller of NOMRADR = 1e8 mm turning at VS/NOMRADR: the
+  // curved reference, the average creepages and the forces of the track (the roller's material
+  // passes the contact at RPITCH·NOMRADR = VS, its surface within 1e-8 mm of the track's).
+  const model::WheelRailProblem track = rolling_tread(true);
+  model::WheelRailProblem roller = track;
+  roller.roller = {true, 1e8, track.motion.vs_mm_s / 1e8};
+  roller.motion.vs_mm_s = 0.0;
+  const WheelRailSolution t = WheelsetSolver().solve(track);
+  const WheelRailSolution r = WheelsetSolver().solve(roller);
+  ASSERT_TRUE(t.converged) << t.message;
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_EQ(r.patches.size(), 1U);
+  const WheelRailPatch &a = t.patches[0], &b = r.patches[0];
+  ASSERT_TRUE(b.conformal.active);
+  // V: VS on the track, the mean material speed on a roller (wheelrail-advanced.md §1.6: 2004
+  // mm/s here, the wheel's material 0.4 % faster): the slip velocities agree.
+  EXPECT_NEAR(b.veloc_mm_s, 2004.0, 0.01);
+  EXPECT_EQ(b.chi_rad, 0.0);
+  EXPECT_NEAR(b.xi * b.veloc_mm_s, a.xi * a.veloc_mm_s, 1e-4);  // mm/s, of 8 mm/s
+  EXPECT_NEAR(b.eta * b.veloc_mm_s, a.eta * a.veloc_mm_s, 1e-4);
+  EXPECT_NEAR(b.phi_per_mm * b.veloc_mm_s, a.phi_per_mm * a.veloc_mm_s, 1e-4);
+  ASSERT_EQ(b.conformal.row_alpha_rad.size(), a.conformal.row_alpha_rad.size());
+  for (std::size_t i = 0; i < a.conformal.row_alpha_rad.size(); ++i)
+    EXPECT_NEAR(b.conformal.row_alpha_rad[i], a.conformal.row_alpha_rad[i], 1e-9);
+  EXPECT_NEAR(r.force_tr.x, t.force_tr.x, 1e-3 * std::abs(t.force_tr.x));
+  EXPECT_NEAR(r.force_tr.y, t.force_tr.y, 1e-3 * std::abs(t.force_tr.y) + 0.1);
+  EXPECT_NEAR(r.z_ws_mm, t.z_ws_mm, 1e-6);
+}
+
+TEST(ConformalContact, InternalRollerConformsAlongXAndRollsForward) {
+  // A cylinder inside a ring of 1000 mm (NOMRADR < 0) at a prescribed approach: with D=4 as with
+  // D=2 the ring's circle lengthens the contact (the same force as the planar patch within 1 %:
+  // the curved reference is that of a crowned rail under a cylinder, nearly planar), and the
+  // material passes at the ring's surface speed.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+  p.roller = {true, -1000.0, -2.0};  // the ring's surface at −2000 mm/s: the wheel rolls forward
+  p.motion.vs_mm_s = 0.0;
+  p.motion.vpitch_rad_s = -2000.0 / 460.0;
+  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.motion.z_mm = 0.02;
+  model::WheelRailProblem planar = p;
+  p.search.conformal = true;
+  const WheelRailSolution c = WheelsetSolver().solve(p);
+  const WheelRailSolution d = WheelsetSolver().solve(planar);
+  ASSERT_EQ(c.patches.size(), 1U);
+  ASSERT_EQ(d.patches.size(), 1U);
+  const WheelRailPatch& w = c.patches[0];
+  ASSERT_TRUE(w.conformal.active);
+  EXPECT_NEAR(w.veloc_mm_s, 2000.0, 1.0);
+  EXPECT_EQ(w.chi_rad, d.patches[0].chi_rad);
+  // Free rolling at the nominal radii: D=2 takes the creepage at the reference point, where
+  // ring and wheel pass at 2000 mm/s both (ξ = 0). The ring's profile is the crown, so off the
+  // centre line its radius is 1000 + y²/600 mm and its material faster: D=4's average over
+  // the contact (semi-width about 2.5 mm, mean y² about 2.5 mm²) is ξ ≈ −2.5/600/1000 = −4e-6.
+  EXPECT_EQ(d.patches[0].xi, 0.0);
+  EXPECT_LT(w.xi, -2e-6);  // measured −5.1e-6
+  EXPECT_GT(w.xi, -1e-5);
+  EXPECT_NEAR(w.conformal.tilde_fn, d.patches[0].solution.totals.fn,
+              0.01 * d.patches[0].solution.totals.fn);
+}
+
 }  // namespace
 }  // namespace rollcontact
