@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <variant>
+#include <vector>
 
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/to_wheelrail.hpp"
@@ -77,6 +78,28 @@ TEST(SlicedRail, SinkingRailCarriesTheWheelLowerAndMovesTheContactBack) {
   // Further along, the wheel sits lower by the rail's depth there.
   const WheelRailSolution c = solve(sliced_crown(1.0, 800.0));
   EXPECT_NEAR(c.z_ws_mm - b.z_ws_mm, 0.3, 2e-5);
+}
+
+TEST(SlicedRail, ConformalPatchOnASinkingRail) {
+  // D=4 on the sinking rail: identical slices give the plain rail's conformal patch, and the
+  // rail sinking 1 mm/m carries the wheelset lower by its depth as with D=2 (the curved
+  // reference's rail samples lie on the 3-D surface at x_ref).
+  model::WheelRailProblem plain = sliced_crown(0.0, 500.0);
+  plain.rail.slices = {};
+  plain.search.conformal = true;
+  model::WheelRailProblem same = sliced_crown(0.0, 500.0), sinking = sliced_crown(1.0, 500.0);
+  same.search.conformal = sinking.search.conformal = true;
+  const WheelRailSolution a = solve(plain), b = solve(same), c = solve(sinking);
+  ASSERT_TRUE(b.patches[0].conformal.active);
+  EXPECT_NEAR(b.z_ws_mm, a.z_ws_mm, 1e-6);
+  EXPECT_NEAR(b.force_tr.x, a.force_tr.x, 1e-5 * 1e4);
+  const std::vector<double>&ra = a.patches[0].conformal.row_alpha_rad,
+        &rb = b.patches[0].conformal.row_alpha_rad;
+  ASSERT_EQ(ra.size(), rb.size());
+  for (std::size_t i = 0; i < ra.size(); ++i) EXPECT_NEAR(rb[i], ra[i], 1e-6);
+  const double s = 1e-3, r = 460.0;
+  EXPECT_NEAR(c.z_ws_mm - a.z_ws_mm, 0.5 - 0.5 * s * s * r, 2e-5);
+  EXPECT_NEAR(c.patches[0].reference_tr.x, -s * r, 5e-3);
 }
 
 TEST(SlicedRail, GaugePointPlacementIsRefused) {
