@@ -43,7 +43,7 @@ ElementGeometry element_geometry(const PlacedProfiles& prof, const WheelsetPose&
     double t_wheel = t_rail;
     CurveHint hint;  // the wheel profile segment, carried along the row
     for (int i = 0; i < mx; ++i) {
-      const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i)) * f.ex;
+      const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i) - s.origin_x_mm) * f.ex;
       // A prismatic rail is the same all along a row; a roller or sliced rail is not.
       double t_here = t_rail;
       if (prof.rail_varies_along_x() && !rail_surface_along(prof, point, f.en, t_rail, t_here))
@@ -104,7 +104,8 @@ void set_rolling_speed(const model::WheelRailProblem& p, const PatchSetup& s,
       for (int i = 0; i < mx; ++i) {
         const std::size_t e = static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) +
                               static_cast<std::size_t>(i);
-        const double x = s.dx_mm * (s.ix0 + i), y = s.curved->s_tilde(static_cast<std::size_t>(j));
+        const double x = s.dx_mm * (s.ix0 + i) - s.origin_x_mm;
+        const double y = s.curved->s_tilde(static_cast<std::size_t>(j));
         if (!g.found[e] || x * x + y * y >= best) continue;
         best = x * x + y * y;
         speed = -0.5 * (v.rail[e].x + v.wheel[e].x);
@@ -125,6 +126,7 @@ std::vector<SlipSample> element_slip(const model::WheelRailProblem& p, const Pat
   const double sign_chi = std::cos(k.chi_rad) >= 0.0 ? 1.0 : -1.0;
   const double fr = rail_share(p.patch.bodies);
   const double speed = k.veloc_mm_s >= 1e-6 ? k.veloc_mm_s : 1.0;
+  const bool shift = p.patch.tangential.kind == model::TangentialKind::Shift;
   const Vec3 ex{1.0, 0.0, 0.0};
   std::vector<SlipSample> w(g.h.size());
   for (int j = 0; j < my; ++j) {
@@ -134,6 +136,11 @@ std::vector<SlipSample> element_slip(const model::WheelRailProblem& p, const Pat
       const std::size_t e = row * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
       if (!g.found[e]) continue;
       const Vec3 vp = v.rail[e], vq = v.wheel[e];
+      if (shift) {  // T=1: the "velocities" are the step's increments, nothing flows
+        w[e].wx = dot(vp - vq, ex);
+        w[e].wy = dot(vp - vq, es);
+        continue;
+      }
       const double px = dot(vp, ex), pn = dot(vp, en), qx = dot(vq, ex), qn = dot(vq, en);
       const double mid_x = fr * px + (1.0 - fr) * qx, mid_n = fr * pn + (1.0 - fr) * qn;
       const double len = std::hypot(mid_x, mid_n);
@@ -172,23 +179,33 @@ PatchKinematics fit_average_creepages(const std::vector<SlipSample>& samples) {
 }
 
 void setup_conformal_patch(const model::WheelRailProblem& p, const PlacedProfiles& prof,
-                           const WheelsetPose& pose, const ContactRegion& region, PatchSetup& s,
+                           const WheelsetPose& pose, const ContactRegion& region,
+                           const PatchExtent& extent, PatchSetup& s,
                            std::vector<std::string>& warnings) {
   s.frame = contact_frame(region);
   s.dx_mm = p.search.dx_mm;
   s.ds_mm = p.search.ds_mm;
+  const bool fixed = on_super_grid(p);
   int mx = 0, my = 0;
   // CONTACT allows 1.2·NPOT_MAX for D=4: the curved reference's 20 % slack.
   const double limit = 1.2 * p.search.max_elements;
   for (int doubling = 0;; ++doubling) {
-    s.curved = curved_reference(prof, pose, region, s.ds_mm);
+    CurvedRows rows;
+    rows.ds_mm = s.ds_mm;
+    rows.on_super_grid = fixed;
+    if (s.continued) {
+      rows.cover_lo_mm = extent.s_lo_mm;
+      rows.cover_hi_mm = extent.s_hi_mm;
+    }
+    s.curved = curved_reference(prof, pose, region, rows);
     const GridAxis ax =
-        cover_axis(region.x_min - region.reference.x, region.x_max - region.reference.x, s.dx_mm);
+        cover_axis(extent.x_lo_mm + s.origin_x_mm, extent.x_hi_mm + s.origin_x_mm, s.dx_mm);
     s.ix0 = ax.first;
     s.iy0 = s.curved->k_first;
+    s.origin_y_mm = s.curved->s_origin_mm;
     mx = ax.count;
     my = static_cast<int>(s.curved->rows());
-    if (static_cast<double>(mx) * my < limit || doubling > 20) break;
+    if (static_cast<double>(mx) * my < limit || doubling > 20 || fixed) break;
     s.dx_mm *= 2.0;
     s.ds_mm *= 2.0;
     warnings.push_back(fmt::format(
@@ -201,7 +218,8 @@ void setup_conformal_patch(const model::WheelRailProblem& p, const PlacedProfile
   q.potential.ipotcn = 1;
   q.potential.mx = mx;
   q.potential.my = my;
-  q.potential.values = {(s.ix0 - 0.5) * s.dx_mm, (s.iy0 - 0.5) * s.ds_mm, s.dx_mm, s.ds_mm};
+  q.potential.values = {(s.ix0 - 0.5) * s.dx_mm - s.origin_x_mm,
+                        (s.iy0 - 0.5) * s.ds_mm - s.origin_y_mm, s.dx_mm, s.ds_mm};
   ElementGeometry g = element_geometry(prof, pose, s, mx, my);
   const double h_min = *std::min_element(g.h.begin(), g.h.end());
   s.pen_mm = -h_min;
@@ -219,17 +237,18 @@ void setup_conformal_patch(const model::WheelRailProblem& p, const PlacedProfile
   const ElementVelocities v = element_velocities(p, prof, pose, g);
   set_rolling_speed(p, s, g, v, mx, my, k);
   const model::TangentialKind kind = p.patch.tangential.kind;
+  if (kind == model::TangentialKind::Shift) k = {0.0, 0.0, 0.0, 0.0, 1.0, 1.0};  // as D=2
   if (kind == model::TangentialKind::None) return;
   std::vector<SlipSample> w = element_slip(p, s, g, v, mx, my);
   // Spin arms as the tangential solver takes them: the rolling offset f_φ·δq along χ.
-  const double f = p.patch.rolling.spin_offset_factor;
+  const double f = kind == model::TangentialKind::Shift ? 0.0 : p.patch.rolling.spin_offset_factor;
   const double off_x = std::cos(k.chi_rad) * k.dq_mm * f, off_y = std::sin(k.chi_rad) * k.dq_mm * f;
   std::vector<SlipSample> inside;
   for (int j = 0; j < my; ++j)
     for (int i = 0; i < mx; ++i) {
       const std::size_t e =
           static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
-      w[e].x = s.dx_mm * (s.ix0 + i) + off_x;
+      w[e].x = s.dx_mm * (s.ix0 + i) - s.origin_x_mm + off_x;
       w[e].y = s.curved->s_tilde(static_cast<std::size_t>(j)) + off_y;
       if (g.found[e] && g.h[e] < 0.0) inside.push_back(w[e]);
     }

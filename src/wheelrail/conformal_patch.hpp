@@ -24,11 +24,20 @@ struct SlipSample {
 /// all zero for no samples or a degenerate set (all at one point).
 PatchKinematics fit_average_creepages(const std::vector<SlipSample>& samples);
 
-/// Fills in the conformal patch of `region` in `s`: frame, curved reference, grid, gap,
-/// approach, kinematics (average creepages) and the remainder of the rigid slip as the
-/// problem's extra slip. `s.problem` must hold the case's patch settings already.
+/// What the grid must cover, relative to the reference point [mm]: x along the track and the
+/// rail arc length (the region's, on a super grid widened to a continued patch's previous
+/// contact).
+struct PatchExtent {
+  double x_lo_mm = 0.0, x_hi_mm = 0.0, s_lo_mm = 0.0, s_hi_mm = 0.0;
+};
+
+/// Fills in the conformal patch of `region` in `s`: curved reference, grid, gap, approach,
+/// kinematics (average creepages) and the remainder of the rigid slip as the problem's extra
+/// slip. `s` holds the frame, the super grid's origin and continuation (setup_patch) and
+/// `s.problem` the case's patch settings already.
 void setup_conformal_patch(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
-                           const WheelsetPose& pose, const ContactRegion& region, PatchSetup& s,
+                           const WheelsetPose& pose, const ContactRegion& region,
+                           const PatchExtent& extent, PatchSetup& s,
                            std::vector<std::string>& warnings);
 
 /// The tilde and bar forces and the planar moments of a solved conformal patch.

@@ -65,7 +65,8 @@ Sample wheel_sample(const PlacedProfiles& prof, const WheelsetPose& pose, double
 }  // namespace
 
 CurvedReference curved_reference(const PlacedProfiles& prof, const WheelsetPose& pose,
-                                 const ContactRegion& region, double ds) {
+                                 const ContactRegion& region, const CurvedRows& rows) {
+  const double ds = rows.ds_mm;
   const double y_r = prof.rail_y_mm();
   const double s_ref = prof.rail().at_y(region.reference.y - y_r).s;
   double s_sta = prof.rail().at_y(region.y_min - y_r).s;
@@ -73,9 +74,16 @@ CurvedReference curved_reference(const PlacedProfiles& prof, const WheelsetPose&
   if (s_sta > s_end) std::swap(s_sta, s_end);
   s_sta = std::min(s_sta, s_ref);
   s_end = std::max(s_end, s_ref);
-  // 20 % slack on either side of the reference, then whole multiples of DS and 3 samples more.
-  const double c_sta = s_sta + 0.2 * (s_sta - s_ref) - s_ref;
-  const double c_end = s_end + 0.2 * (s_end - s_ref) - s_ref;
+  // 20 % slack on either side of the reference, then whole multiples of DS and 3 samples more;
+  // the rows counted from the reference, or on a super grid from the rail's origin.
+  const double s_pot = rows.on_super_grid ? 0.0 : s_ref;
+  const bool cover = rows.cover_lo_mm <= rows.cover_hi_mm;
+  double c_sta = s_sta + 0.2 * (s_sta - s_ref) - s_pot;
+  double c_end = s_end + 0.2 * (s_end - s_ref) - s_pot;
+  if (cover) {
+    c_sta = std::min(c_sta, s_ref + rows.cover_lo_mm - s_pot);
+    c_end = std::max(c_end, s_ref + rows.cover_hi_mm - s_pot);
+  }
   const int k_sta = static_cast<int>(std::floor(c_sta / ds)) - 3;
   const int k_end = static_cast<int>(std::ceil(c_end / ds)) + 3;
   const int n = k_end - k_sta + 1;
@@ -87,9 +95,9 @@ CurvedReference curved_reference(const PlacedProfiles& prof, const WheelsetPose&
 
   std::vector<Vec3> mid(static_cast<std::size_t>(n)), avg(static_cast<std::size_t>(n));
   int keep_lo = n, keep_hi = -1;
-  const int i_ref = -k_sta;
+  const int i_ref = static_cast<int>(std::lround((s_ref - s_pot) / ds)) - k_sta;
   for (int i = 0; i < n; ++i) {
-    const double sc = ds * (k_sta + i);
+    const double sc = ds * (k_sta + i) + s_pot - s_ref;  // from the reference
     const Sample rail = rail_sample(prof, s_ref + sc, x_ref);
     const Sample wheel = wheel_sample(prof, pose, s_w_ref - sc, x_ref);
     const Vec3 m = 0.5 * (rail.point + wheel.point);
@@ -107,12 +115,21 @@ CurvedReference curved_reference(const PlacedProfiles& prof, const WheelsetPose&
     throw GeometryError(
         "conformal contact (D=4): no sample of the curved reference surface lies in the contact "
         "region with rail and wheel facing each other");
-  keep_lo = std::max(0, std::min(keep_lo, i_ref - 1) - 2);
-  keep_hi = std::min(n - 1, std::max(keep_hi, i_ref + 1) + 2);
+  keep_lo = std::min(keep_lo, i_ref - 1);
+  keep_hi = std::max(keep_hi, i_ref + 1);
+  if (cover) {  // the previous contact's rows, whatever their normals
+    keep_lo = std::min(
+        keep_lo, static_cast<int>(std::floor((s_ref + rows.cover_lo_mm - s_pot) / ds)) - k_sta);
+    keep_hi = std::max(
+        keep_hi, static_cast<int>(std::ceil((s_ref + rows.cover_hi_mm - s_pot) / ds)) - k_sta);
+  }
+  keep_lo = std::max(0, keep_lo - 2);
+  keep_hi = std::min(n - 1, keep_hi + 2);
 
   CurvedReference c;
   c.ds_mm = ds;
   c.k_first = k_sta + keep_lo;
+  c.s_origin_mm = s_ref - s_pot;
   for (int i = keep_lo; i <= keep_hi; ++i) {
     const Vec3 nb = avg[static_cast<std::size_t>(i)];
     c.point.push_back(mid[static_cast<std::size_t>(i)]);

@@ -355,7 +355,7 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
   model::PatchProblem& q = s.problem;
   if (p.search.conformal) {
     q = p.patch;
-    setup_conformal_patch(p, prof, pose, region, s, warnings);
+    setup_conformal_patch(p, prof, pose, region, {x_lo, x_hi, s_lo, s_hi}, s, warnings);
   } else {
     setup_planar_grid(p, prof, pose, x_lo, x_hi, s_lo, s_hi, s, warnings);
     s.kinematics = patch_kinematics(p, pose, prof, s.frame, s.pen_mm);

@@ -71,16 +71,11 @@ CaseRecord settings_record(const WheelRailRecord& r) {
 void check_supported(const WheelRailRecord& r) {
   const ControlDigits& d = r.digits;
   // D=4 (conformal contact) solves each patch on a curved reference surface, on a track or a
-  // roller rig, for static and steady-rolling cases (wheelrail-advanced.md §1); D=3, 6-9 only
-  // choose CONTACT's search variant and are solved with D=2 or D=5 (contact_search_note()).
+  // roller rig (wheelrail-advanced.md §1); D=3, 6-9 only choose CONTACT's search variant and
+  // are solved with D=2 or D=5 (contact_search_note()).
   if (r.discretisation.method == 4) {
     if (r.wheel.sliced)
       not_supported("conformal contact (D=4) with variable wheel profiles (wheel slices files)");
-    if (d.t == 1 || d.t == 2)
-      not_supported(
-          fmt::format("conformal contact (D=4) with T={} (shifts and transient rolling "
-                      "on a super grid)",
-                      d.t));
   }
   // F=1 (FX_WS prescribed), F=2 (MY_WS prescribed; both experimental in CONTACT, VPITCH solved)
   // and F=3 (massless rail) are solved.

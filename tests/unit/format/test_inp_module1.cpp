@@ -217,8 +217,8 @@ TEST(InpModule1, InternalRollerHasANegativeRadiusAndZeroIsRefused) {
 
 TEST(InpModule1, SearchVariantsAreSolvedByTheirNeighboursWithANote) {
   // D=6 and 9 (gap-grid variants) are solved as D=5, D=3, 7 and 8 (planar variants) as D=2,
-  // each with a note; D=4 is conformal contact (a curved reference per patch), refused only
-  // where it is not built: shifts and transient rolling (T=1, 2), roller rigs, slices.
+  // each with a note; D=4 is conformal contact (a curved reference per patch), also for
+  // shifts and transient rolling (T=1, 2) on the super grid; only wheel slices are refused.
   for (const char* w2 : {"0062033", "0092033", "0032033", "0072033", "0082033"}) {
     const auto cases = read(first_case("1203100", w2) + " 0 MODULE\n");
     const format::WheelRailRecord& c = wr(cases, 0);
@@ -234,7 +234,7 @@ TEST(InpModule1, SearchVariantsAreSolvedByTheirNeighboursWithANote) {
   EXPECT_TRUE(p.search.conformal);
   EXPECT_EQ(p.search.method, model::ContactSearch::Locus);
   const auto transient = read(first_case("1202100", "0042033") + " 0 MODULE\n");
-  EXPECT_THROW((void)format::to_wheelrail_problem(wr(transient, 0)), NotSupportedError);
+  EXPECT_TRUE(format::to_wheelrail_problem(wr(transient, 0)).search.conformal);
 }
 
 TEST(InpModule1, FxWsReplacesVpitchWithF1) {

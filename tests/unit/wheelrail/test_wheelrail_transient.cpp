@@ -142,5 +142,63 @@ TEST(WheelRailTransient, BenchmarkRolledThroughTheInpRoute) {
   std::filesystem::remove_all(scratch);
 }
 
+TEST(WheelRailTransient, ConformalRollingFromRestReachesTheConformalSteadyState) {
+  // D=4 on the super grid (wheelrail-advanced.md §1.9): rows at multiples of DS of the rail's
+  // own arc length, the grid carried with the wheelset; rolling from rest ends at D=4's steady
+  // state as D=2's does at its own.
+  model::WheelRailProblem steady_problem = creeping_wheel(model::TangentialKind::SteadyRolling);
+  steady_problem.search.conformal = true;
+  WheelsetSolver steady_solver;
+  const WheelRailSolution steady = steady_solver.solve(steady_problem);
+  ASSERT_TRUE(steady.converged) << steady.message;
+  ASSERT_EQ(steady.patches.size(), 1u);
+  WheelsetSolver solver;
+  model::WheelRailProblem p = creeping_wheel(model::TangentialKind::TransientRolling);
+  p.search.conformal = true;
+  WheelRailSolution last;
+  for (int step = 0; step < 70; ++step) {
+    p.patch.sequence.continue_previous = step > 0;
+    p.first_of_sequence = step == 0;
+    p.motion.s_mm = 0.2 * step;
+    last = solver.solve(p);
+    ASSERT_TRUE(last.converged) << "step " << step << ": " << last.message;
+    ASSERT_EQ(last.patches.size(), 1u);
+    ASSERT_TRUE(last.patches[0].conformal.active);
+  }
+  // Steady rows lie at multiples of DS from the reference point, the super grid's at multiples
+  // of DS of the rail's arc length (the reference at s_rail).
+  const ConformalPatch &a = steady.patches[0].conformal, &b = last.patches[0].conformal;
+  EXPECT_NEAR(std::remainder(a.row0_s_mm, a.ds_mm), 0.0, 1e-9);
+  EXPECT_NEAR(std::remainder(b.row0_s_mm + last.patches[0].s_rail_mm, b.ds_mm), 0.0, 1e-6);
+  EXPECT_NEAR(last.force_tr.x, steady.force_tr.x, 1e-3 * std::abs(steady.force_tr.x));
+  EXPECT_NEAR(last.force_tr.y, steady.force_tr.y, 1e-3 * std::abs(steady.force_tr.y));
+  EXPECT_NEAR(last.patches[0].xi, steady.patches[0].xi, 1e-9);
+}
+
+TEST(WheelRailTransient, ConformalShiftWithZeroIncrementsKeepsTheTractions) {
+  // T=1 with D=4: a lateral shift of 2 µm, then a case with zero increments keeps the load.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+  p.patch.tangential.kind = model::TangentialKind::Shift;
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 10000.0;
+  p.motion.vs_mm_s = 0.0;
+  p.motion.vpitch_rad_s = 0.0;
+  p.search.conformal = true;
+  WheelsetSolver solver;
+  p.first_of_sequence = true;
+  p.motion.vy_mm_s = 0.002;
+  const WheelRailSolution a = solver.solve(p);
+  ASSERT_TRUE(a.converged) << a.message;
+  ASSERT_EQ(a.patches.size(), 1u);
+  EXPECT_NEAR(a.patches[0].eta, -0.002, 1e-6);  // the shift itself, V = 1
+  p.first_of_sequence = false;
+  p.patch.sequence.continue_previous = true;
+  p.motion.vy_mm_s = 0.0;
+  const WheelRailSolution b = solver.solve(p);
+  ASSERT_TRUE(b.converged) << b.message;
+  EXPECT_GT(std::abs(a.force_tr.y), 100.0);
+  EXPECT_NEAR(b.force_tr.y, a.force_tr.y, 1e-3 * std::abs(a.force_tr.y));
+}
+
 }  // namespace
 }  // namespace rollcontact
