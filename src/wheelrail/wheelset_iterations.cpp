@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "geometry/hertz.hpp"
 #include "rollcontact/errors.hpp"
@@ -69,27 +70,46 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
       settings.force_scale_N = std::max(c * std::pow((z1 - z0) * cos_min, 1.5), 1.0);
   }
   bool first = p.first_of_sequence;
+  // A conformal patch's F_z per newton of its pressure's normal force that its tangential
+  // tractions add (their BAR turning), from the last full solve; NaN for planar patches.
+  std::vector<double> tangential_share;
   auto full_at = [&](double z) {
     result = solve_at(p, z, first);
     first = false;
     wheelrail::HeightSample h;
     h.z_mm = z;
     h.fz_N = result.force_tr.z;
-    for (const WheelRailPatch& w : result.patches)
-      h.patches.push_back(
-          {w.solution.totals.pen, w.contact_angle_rad, w.solution.totals.fn, w.solution.totals.fy});
+    tangential_share.clear();
+    for (const WheelRailPatch& w : result.patches) {
+      const wheelrail::PlanarForces f = wheelrail::planar_forces(w);
+      h.patches.push_back({w.solution.totals.pen, w.contact_angle_rad, f.fn, f.fs});
+      double share = std::numeric_limits<double>::quiet_NaN();
+      if (w.conformal.active) {
+        const wheelrail::PlanarForces n = wheelrail::pressure_part(w);
+        const double c = std::cos(w.contact_angle_rad), s = std::sin(w.contact_angle_rad);
+        share = n.fn > 0.0 ? ((f.fn - n.fn) * c + (f.fs - n.fs) * s) / n.fn : 0.0;
+      }
+      tangential_share.push_back(share);
+    }
     return h;
   };
-  // F_z = Σ F_n cos δ + F_s sin δ with F_s = fs_ratio·F_n from the last full solve.
+  // F_z = Σ F_n cos δ + F_s sin δ with F_s = fs_ratio·F_n from the last full solve; for a
+  // conformal patch the normal solve's own F_z (its pressure's BAR forces) plus the tangential
+  // share, so that the estimate aims where the full solve lands.
   auto normal_at = [&](double z, const std::vector<double>& fs_ratio) {
     const WheelRailSolution r = solve_at(p, z, false, true);
     wheelrail::HeightSample h;
     h.z_mm = z;
     for (std::size_t i = 0; i < r.patches.size(); ++i) {
       const WheelRailPatch& w = r.patches[i];
-      const double fn = w.solution.totals.fn, delta = w.contact_angle_rad;
+      const double fn = wheelrail::planar_forces(w).fn, delta = w.contact_angle_rad;
       const double fs = (i < fs_ratio.size() ? fs_ratio[i] : 0.0) * fn;
-      h.fz_N += fn * std::cos(delta) + fs * std::sin(delta);
+      const double share = i < tangential_share.size() ? tangential_share[i]
+                                                       : std::numeric_limits<double>::quiet_NaN();
+      if (w.conformal.active && !std::isnan(share))
+        h.fz_N += w.force_tr.z + share * fn;
+      else
+        h.fz_N += fn * std::cos(delta) + fs * std::sin(delta);
       h.patches.push_back({w.solution.totals.pen, delta, fn, fs});
     }
     return h;

@@ -97,6 +97,22 @@ WheelRailPatch describe_patch(const model::WheelRailProblem& p, const PlacedProf
   return w;
 }
 
+PlanarForces pressure_part(const WheelRailPatch& w) {
+  const Solution& sol = w.solution;
+  if (!w.conformal.active) return {sol.totals.fn, 0.0};
+  PlanarForces f;
+  if (sol.pn.empty()) return f;
+  for (int iy = 0; iy < sol.grid.my; ++iy) {
+    const double d = w.conformal.row_alpha_rad[static_cast<std::size_t>(iy)] - w.contact_angle_rad;
+    double row = 0.0;
+    for (int ix = 0; ix < sol.grid.mx; ++ix) row += std::max(sol.pn[sol.grid.index(ix, iy)], 0.0);
+    f.fn += row * std::cos(d);
+    f.fs -= row * std::sin(d);
+  }
+  const double area = sol.grid.dx * sol.grid.dy;
+  return {f.fn * area, f.fs * area};
+}
+
 /// The rail and wheel markers of the placement (physics.md §13.2).
 void describe_markers(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                       const WheelsetPose& pose, WheelRailSolution& out) {

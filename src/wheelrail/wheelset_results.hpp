@@ -26,6 +26,20 @@ double contact_modulus(const model::Bodies& b);
 WheelRailPatch describe_patch(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                               const WheelsetPose& pose, const PatchSetup& s, Solution sol);
 
+/// A patch's normal and lateral force in its planar frame (the one turned by the contact angle)
+/// [N]: a conformal patch's BAR forces, a planar patch's FN, FS.
+struct PlanarForces {
+  double fn = 0.0, fs = 0.0;
+};
+inline PlanarForces planar_forces(const WheelRailPatch& w) {
+  if (w.conformal.active) return {w.conformal.bar_fn, w.conformal.bar_fs};
+  return {w.solution.totals.fn, w.solution.totals.fy};
+}
+
+/// A conformal patch's BAR forces of its pressure alone (Σ p_n turned by each row's α − δ),
+/// without the tangential tractions' share [N]; planar_forces() for a planar patch's FN, 0.
+PlanarForces pressure_part(const WheelRailPatch& w);
+
 /// The rail and wheel markers of the placement (physics.md §13.2).
 void describe_markers(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                       const WheelsetPose& pose, WheelRailSolution& out);
