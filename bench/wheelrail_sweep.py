@@ -5,7 +5,8 @@ steps, yaw rising with it to 24 mrad; roll and pitch rate interpolated between t
 values), for the right and the left wheel, FZ = 10 and 50 kN per wheel (20 and 100 kN per
 axle), DX = DS = 0.5 and 0.2 mm, steady rolling with the exact solvers, the vertical force
 prescribed (N=1) and the position prescribed (N=0, at the heights the N=1 sweep found), and
-KPEC pressures (B=5) with Fastsim (M=3) at prescribed vertical force: 24 sweeps, 2,424 cases.
+KPEC pressures (B=5) with Fastsim (M=3) at prescribed vertical force: 24 sweeps, 2,424 cases;
+with --conformal also each force sweep with conformal contact (D=4): 32 sweeps, 3,232 cases.
 
 Each sweep is one .inp file of 101 cases, run as a whole process under /usr/bin/time -v
 (median of --repeat runs). Reported per sweep: wall time, time per case, peak memory, the share
@@ -78,9 +79,17 @@ def material_digit(line, m_digit):
     return line.replace(word, word[:4] + str(m_digit) + word[5:], 1)
 
 
-def write_sweep(path, side_file, load, grid, positions, heights=None, kpec=False):
+def search_digit(line, d_digit):
+    """The V-L-D-C-M-Z-E line with D replaced."""
+    word = line.split()[0]
+    return line.replace(word, word[:2] + str(d_digit) + word[3:], 1)
+
+
+def write_sweep(path, side_file, load, grid, positions, heights=None, kpec=False,
+                conformal=False):
     """One sweep file; heights (per case, from the N=1 run) make it position-prescribed; kpec:
-    KPEC pressures (B=5) with Fastsim (M=3), as mbench_a22_kpec's first cases."""
+    KPEC pressures (B=5) with Fastsim (M=3), as mbench_a22_kpec's first cases; conformal:
+    conformal contact (D=4) instead of the planar patches (D=2)."""
     first, cases = benchmark_cases(side_file)
     sign = 1.0 if cases[-1][0] >= 0 else -1.0
     out = []
@@ -97,8 +106,8 @@ def write_sweep(path, side_file, load, grid, positions, heights=None, kpec=False
                     continue
                 if "C-P-B-T-N-F-S" in line:
                     line = digits_line(line, 0 if heights else 1, kpec)
-                elif "V-L-D-C-M-Z-E" in line and kpec:
-                    line = material_digit(line, 3)
+                elif "V-L-D-C-M-Z-E" in line and (kpec or conformal):
+                    line = material_digit(line, 3) if kpec else search_digit(line, 4)
                 elif "DX" in line and "DS" in line:
                     v = line.split()
                     line = f"  {grid:.3f}   {grid:.3f}   {v[2]}   {v[3]}   {v[4]}   {v[5]}      DX, DS, DQREL, A_SEP, D_SEP, D_COMB"
@@ -142,6 +151,8 @@ def main():
     ap.add_argument("--out", default="wheelrail_sweep")
     ap.add_argument("--repeat", type=int, default=3, help="runs per sweep; the median is reported")
     ap.add_argument("--quick", action="store_true", help="11 positions per sweep (smoke test)")
+    ap.add_argument("--conformal", action="store_true",
+                    help="also each force sweep with conformal contact (D=4)")
     a = ap.parse_args()
     out, examples = Path(a.out), Path(a.examples)
     out.mkdir(parents=True, exist_ok=True)
@@ -156,10 +167,12 @@ def main():
             for grid in GRIDS_MM:
                 stem = f"{side}_fz{int(load / 1000)}k_dx{grid}"
                 heights = None
-                for mode in ("force", "position", "kpec"):
+                modes = ("force", "position", "kpec") + (("conformal",) if a.conformal else ())
+                for mode in modes:
                     inp = out / f"{stem}_{mode}.inp"
                     write_sweep(inp, examples / side_name, load, grid, positions,
-                                heights if mode == "position" else None, mode == "kpec")
+                                heights if mode == "position" else None, mode == "kpec",
+                                mode == "conformal")
                     runs = [run(a.exe, inp) for _ in range(max(1, a.repeat))]
                     wall = statistics.median(r[0] for r in runs)
                     rss = max(r[1] for r in runs)
