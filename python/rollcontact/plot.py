@@ -139,11 +139,16 @@ def placed_profiles(case):
 
 def wheelrail(case, ax=None, margin_mm=40.0, title=None):
     """A wheel/rail result: the placed rail and wheel profiles around the contact, with each
-    patch's reference point and its extent along the contact (the grid's width)."""
+    patch's reference point and its extent along the contact (the grid's width); a conformal
+    patch (D=4) shows its curved reference surface instead, one point per grid row."""
     rail, wheel = placed_profiles(case)
     points = [(p["reference_tr"][1], p["reference_tr"][2]) for p in case["patches"]]
     ax = profiles(rail, wheel, points, ax=ax, title=title)
     for p in case["patches"]:
+        if "conformal" in p:
+            c = p["conformal"]
+            ax.plot(c["row_y"], c["row_z"], "r.-", linewidth=2, markersize=3, alpha=0.6)
+            continue
         g, d = p["grid"], p["contact_angle"]
         width = g["my"] * g["dy"]
         y0, z0 = p["reference_tr"][1], p["reference_tr"][2]

@@ -120,3 +120,6 @@ def test_conformal_patch_from_python(tmp_path):
     # The rows turn monotonically with the flange root, through the reference angle.
     assert np.all(np.diff(c["row_alpha"]) > 0)
     assert min(c["row_alpha"]) < d < max(c["row_alpha"])
+    ax = rc.plot.wheelrail(conformal)  # the curved reference drawn over the profiles
+    ax.figure.savefig(tmp_path / "conformal.png", dpi=80)
+    assert (tmp_path / "conformal.png").stat().st_size > 5000
