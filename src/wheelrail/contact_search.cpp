@@ -49,7 +49,9 @@ double varying_rail_locus_x(const PlacedProfiles& prof, const WheelsetPose& pose
 /// The contact locus sampled along the wheel profile and mapped onto the lateral grid: where
 /// several locus segments cover one grid position, the deepest wheel point counts.
 void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
-                const WheelsetPose& pose, GapFunction& g, std::vector<double>& z_locus) {
+                const WheelsetPose& pose, GapSamples& s) {
+  GapFunction& g = s.base;
+  std::vector<double>& z_locus = s.locus_z;
   const std::size_t n = g.gap.size();
   z_locus.assign(n, -kNoWheel);
   g.x_locus.assign(n, 0.0);
@@ -59,11 +61,20 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
   const ProfileCurve& wheel = prof.wheel();
   const double step = 0.5 * g.dy_mm;
   const auto samples = static_cast<std::size_t>((wheel.y_max() - wheel.y_min()) / step) + 1;
+  // The profile's points at the sample positions: the same for every pose of a plain wheel.
+  if (prof.wheel_surface() != nullptr || s.wheel_step_mm != step ||
+      s.wheel_points.size() != samples + 1) {
+    s.wheel_points.clear();
+    for (std::size_t k = 0; k <= samples; ++k)
+      s.wheel_points.push_back(
+          wheel.at_y(std::min(wheel.y_min() + step * static_cast<double>(k), wheel.y_max())));
+    s.wheel_step_mm = prof.wheel_surface() != nullptr ? 0.0 : step;
+  }
   Vec3 prev{};
   bool have_prev = false;
   for (std::size_t k = 0; k <= samples; ++k) {
     const double yp = std::min(wheel.y_min() + step * static_cast<double>(k), wheel.y_max());
-    const CurvePoint w = wheel.at_y(yp);
+    const CurvePoint& w = s.wheel_points[k];
     if (!w.found) continue;
     const double r = r0 + w.z;
     double x = (r * w.dz_dy * R.r[0][1] - r_nom * R.r[0][2]) / R.r[0][0];
@@ -328,7 +339,7 @@ GapSamples sample_rail(const model::WheelRailProblem& p, const PlacedProfiles& p
 
 void sample_wheel(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                   const WheelsetPose& pose_at_zero, GapSamples& s) {
-  fill_locus(p, prof, pose_at_zero, s.base, s.locus_z);
+  fill_locus(p, prof, pose_at_zero, s);
   if (p.search.method == model::ContactSearch::GapGrid)
     minimise_gap_along_x(prof, pose_at_zero, s.base, s.locus_z);
   s.rail_drop.clear();

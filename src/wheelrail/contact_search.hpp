@@ -67,6 +67,11 @@ struct GapSamples {
   /// A roller or sliced rail: how much lower the rail's surface lies under the locus than its
   /// section at x = 0 [mm]; empty for a prismatic rail.
   std::vector<double> rail_drop;
+  /// The wheel profile sampled for the locus (every wheel_step_mm in y): it does not depend on
+  /// the wheelset's pose, so cases with the same profiles and DS reuse it (plain wheels only;
+  /// a sliced wheel's cross-section changes with its rotation).
+  std::vector<CurvePoint> wheel_points;
+  double wheel_step_mm = 0.0;
 };
 
 /// Weight of one interpenetrating gap sample of depth pen [mm] with the rolling curvature c
