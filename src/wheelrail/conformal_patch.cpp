@@ -62,7 +62,8 @@ ElementGeometry element_geometry(const PlacedProfiles& prof, const WheelsetPose&
   return g;
 }
 
-/// Share of the wheel in the mid-plane's velocity: f_r = (1−ν₁)G₂ / ((1−ν₁)G₂ + (1−ν₂)G₁).
+/// The rail's share f_r of the mid-plane velocity f_r·v_P + (1 − f_r)·v_Q:
+/// f_r = (1−ν₁)G₂ / ((1−ν₁)G₂ + (1−ν₂)G₁) (½ for equal bodies).
 double rail_share(const model::Bodies& b) {
   const double a = (1.0 - b.body1.poisson_ratio) * b.body2.shear_modulus_N_mm2;
   const double c = (1.0 - b.body2.poisson_ratio) * b.body1.shear_modulus_N_mm2;

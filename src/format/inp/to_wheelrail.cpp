@@ -70,13 +70,9 @@ CaseRecord settings_record(const WheelRailRecord& r) {
 
 void check_supported(const WheelRailRecord& r) {
   const ControlDigits& d = r.digits;
-  // D=4 (conformal contact) solves each patch on a curved reference surface, on a track or a
-  // roller rig (wheelrail-advanced.md §1); D=3, 6-9 only choose CONTACT's search variant and
-  // are solved with D=2 or D=5 (contact_search_note()).
-  if (r.discretisation.method == 4) {
-    if (r.wheel.sliced)
-      not_supported("conformal contact (D=4) with variable wheel profiles (wheel slices files)");
-  }
+  // D=4 (conformal contact) solves each patch on a curved reference surface
+  // (wheelrail-advanced.md §1); D=3, 6-9 only choose CONTACT's search variant and are solved
+  // with D=2 or D=5 (contact_search_note()).
   // F=1 (FX_WS prescribed), F=2 (MY_WS prescribed; both experimental in CONTACT, VPITCH solved)
   // and F=3 (massless rail) are solved.
   // KPEC/ANALYN (B=5, 6) reproduce mbench_a22_kpec cases 2-5; the wheel/rail solver refuses
