@@ -17,23 +17,6 @@ double relaxed_mu(const FastsimVelocityFriction& v, double mu_prime, double spee
   return theta * mu_prime + (1.0 - theta) * v.law->coefficient_at(speed);
 }
 
-/// The slip bound g of an element whose adhesion trial traction has magnitude `trial` > g₀
-/// (the adhesion bound) and whose trial displacement L·p has magnitude `trial_u` [mm]:
-/// g = p_n·μ(s(g)), s(g) = (1 − g/trial)·trial_u/δt. Iterated from g₀ downwards: μ rises with
-/// g, so the iterates fall monotonically to the largest root.
-double velocity_bound(const FastsimVelocityFriction& v, double pn, double mu_prime, double trial,
-                      double trial_u, double g0) {
-  double g = g0;
-  for (int k = 0; k < 1000; ++k) {
-    const double speed = (1.0 - g / trial) * trial_u / v.dt_s;
-    const double next = pn * relaxed_mu(v, mu_prime, speed);
-    const bool settled = std::abs(next - g) <= 1e-13 * g0;
-    g = next;
-    if (settled) break;
-  }
-  return g;
-}
-
 /// Solves one element given the displacement u′ of its particles one step earlier (and μ′ for
 /// velocity-dependent friction); returns the element's displacement u and μ.
 struct ElementOutcome {
@@ -42,16 +25,18 @@ struct ElementOutcome {
 
 ElementOutcome solve_element(const FastsimInput& in, std::size_t i, double upx, double upy,
                              double mu_prime, SimplifiedFields& out) {
-  double mu = in.velocity != nullptr ? relaxed_mu(*in.velocity, mu_prime, 0.0) : in.mu;
-  double bound = mu * in.pn[i];
+  double mu = in.mu;
+  if (in.velocity != nullptr) {
+    const double speed = in.rigid_speed.size() > i
+                             ? in.rigid_speed[i]
+                             : std::hypot(in.wx[i], in.wy[i]) / in.velocity->dt_s;
+    mu = relaxed_mu(*in.velocity, mu_prime, speed);
+  }
+  const double bound = mu * in.pn[i];
   double ux = upx - in.wx[i], uy = upy - in.wy[i];  // adhesion: S = u − u′ + W = 0
   double px = ux / in.flex.l1, py = uy / in.flex.l2;
   const double norm = std::hypot(px, py);
   if (norm > bound) {
-    if (in.velocity != nullptr) {
-      bound = velocity_bound(*in.velocity, in.pn[i], mu_prime, norm, std::hypot(ux, uy), bound);
-      mu = bound / in.pn[i];
-    }
     const double f = bound / norm;
     px *= f;
     py *= f;

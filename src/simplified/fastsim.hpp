@@ -22,9 +22,12 @@ struct SimplifiedFields {
   std::vector<double> mu;  ///< velocity-dependent friction: μ per element (else empty)
 };
 
-/// Friction that falls with the slip velocity, with memory (physics.md §10.1-10.2). Fastsim
-/// solves it element by element: an element's slip depends on its own traction and on what
-/// came from upstream only, so μ(s_a) is a scalar equation per element, not an outer loop.
+/// Friction that falls with the slip velocity, with memory (physics.md §10.1-10.2). As in
+/// CONTACT, Fastsim evaluates the law at each element's rigid slip velocity V·|w| (one pass, no
+/// slip-velocity iteration): μ_I = θ·μ′_I + (1 − θ)·μ_s(V|w_I|), θ = d_c/(d_c + δt·max(V|w_I|,
+/// s₀)), μ′ the upstream element's μ (steady) or the previous time's (transient); μ_I·p_n is the
+/// element's traction bound, in adhesion and in slip (docs/decisions.md: CONTACT's tractcurv
+/// cases 91-120 give this FX to the printed digits).
 struct FastsimVelocityFriction {
   const physics::FrictionLaw* law = nullptr;
   double memory_distance_mm = 0.0;       ///< d_c (MEMDST)
@@ -46,13 +49,14 @@ struct FastsimInput {
   /// mu_prev (previous time, empty: μ_static), in steady rolling the upstream element's μ.
   const FastsimVelocityFriction* velocity = nullptr;
   std::span<const double> mu_prev;
+  /// With velocity-dependent friction: the rigid slip velocity V·|w| per element [mm/s] (the
+  /// rigid shift per step without the spin scaling of the flexibilities, over δt).
+  std::span<const double> rigid_speed;
 };
 
 /// One Fastsim pass. Per contact element: adhesion trial u = u′ − W, p = u/L; if |p| > μp_n the
 /// element slips with p scaled onto the bound and u = L·p. Exterior elements get zeros. With
-/// velocity-dependent friction the bound is g = p_n·μ(|S|/δt) with memory, S = (g/|p| − 1)·L·p
-/// for the trial p: the largest such g below the adhesion bound (the fixed point reached from
-/// zero slip velocity).
+/// velocity-dependent friction μ is the element's (FastsimVelocityFriction).
 SimplifiedFields fastsim(const FastsimInput& in);
 
 /// Displacement of the same particles one step earlier for transient rolling: `u` (previous

@@ -46,6 +46,19 @@ RigidShiftParts rigid_shift_parts(const Grid& grid, const model::PatchProblem& p
   return p;
 }
 
+namespace {
+
+/// μ of the flexibilities' blending and slope reduction (physics.md §11.2): FSTAT for Coulomb
+/// friction, a velocity-dependent law's μ_s at the absolute rigid slip velocity V·√(ξ² + η²)
+/// (δq = δx in steady rolling: V = δx/δt).
+double flexibility_mu(const SimplifiedCase& c) {
+  if (c.velocity == nullptr) return c.mu;
+  const double speed = std::hypot(c.creepages.ksi, c.creepages.eta) * c.grid.dx / c.velocity->dt_s;
+  return c.velocity->law->coefficient_at(speed);
+}
+
+}  // namespace
+
 SimplifiedOutcome solve_simplified(const SimplifiedCase& c) {
   const Ellipse& e = c.ellipse;
   if (!(e.a > 0.0) || !(e.b > 0.0) || !std::isfinite(e.a / e.b))
@@ -57,15 +70,16 @@ SimplifiedOutcome solve_simplified(const SimplifiedCase& c) {
   } else {
     out.flex = kalker_flexibilities(e, out.coefficients, c.g);
     if (c.model.blend)
-      out.flex = blend_flexibilities(out.flex, e, out.coefficients, c.g, c.mu, c.fn, c.creepages);
+      out.flex = blend_flexibilities(out.flex, e, out.coefficients, c.g, flexibility_mu(c), c.fn,
+                                     c.creepages);
   }
   // The slope reduction and the strip theory describe the actual contact patch: its equivalent
   // ellipse (for IPOTCN < 0 close to, but not equal to, the Hertz ellipse).
   const Ellipse eq = equivalent_ellipse(c.grid, c.pn);
   const KalkerCoefficients eq_coefficients =
       eq.a > 0.0 && eq.b > 0.0 ? kalker_coefficients(eq.a / eq.b, c.nu) : out.coefficients;
-  out.k_eff =
-      slope_reduction_factor(c.model.slope, eq, eq_coefficients.c11, c.g, c.mu, c.fn, c.creepages);
+  out.k_eff = slope_reduction_factor(c.model.slope, eq, eq_coefficients.c11, c.g, flexibility_mu(c),
+                                     c.fn, c.creepages);
   const Flexibilities eff{out.flex.l1 / out.k_eff, out.flex.l2 / out.k_eff,
                           out.flex.l3 / out.k_eff};
 
@@ -80,8 +94,16 @@ SimplifiedOutcome solve_simplified(const SimplifiedCase& c) {
     wy[i] = w.wy[i] + fy * w.spin_y[i];
   }
 
+  // The law's slip velocity per element: the rigid slip, spin unscaled, over the step.
+  std::vector<double> rigid_speed;
+  if (c.velocity != nullptr) {
+    rigid_speed.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      rigid_speed[i] = std::hypot(w.wx[i] + w.spin_x[i], w.wy[i] + w.spin_y[i]) / c.velocity->dt_s;
+  }
   FastsimInput in;
   in.grid = c.grid;
+  in.rigid_speed = rigid_speed;
   in.pn = c.pn;
   in.mu = c.mu;
   in.velocity = c.velocity;

@@ -174,7 +174,8 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r.friction.law = 4;
   EXPECT_EQ(
       message_of(r),
-      "not supported yet: friction law L=4 with the simplified theory M=5 (not yet validated)");
+      "not supported yet: friction law L=4 with the simplified theory M=5 (not yet validated: "
+      "forces equal to CONTACT's, adhesion areas one element short in some cases)");
   r = basic_record();
   r.digits.h = 3;
   r.digits.t = 2;
