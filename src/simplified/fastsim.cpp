@@ -17,6 +17,13 @@ double relaxed_mu(const FastsimVelocityFriction& v, double mu_prime, double spee
   return theta * mu_prime + (1.0 - theta) * v.law->coefficient_at(speed);
 }
 
+/// The slip velocity a velocity-dependent law is evaluated at: the element's rigid slip
+/// velocity V·|w| [mm/s].
+double law_speed(const FastsimInput& in, std::size_t i) {
+  return in.rigid_speed.size() > i ? in.rigid_speed[i]
+                                   : std::hypot(in.wx[i], in.wy[i]) / in.velocity->dt_s;
+}
+
 /// Solves one element given the displacement u′ of its particles one step earlier (and μ′ for
 /// velocity-dependent friction); returns the element's displacement u and μ.
 struct ElementOutcome {
@@ -25,13 +32,8 @@ struct ElementOutcome {
 
 ElementOutcome solve_element(const FastsimInput& in, std::size_t i, double upx, double upy,
                              double mu_prime, SimplifiedFields& out) {
-  double mu = in.mu;
-  if (in.velocity != nullptr) {
-    const double speed = in.rigid_speed.size() > i
-                             ? in.rigid_speed[i]
-                             : std::hypot(in.wx[i], in.wy[i]) / in.velocity->dt_s;
-    mu = relaxed_mu(*in.velocity, mu_prime, speed);
-  }
+  const double mu =
+      in.velocity != nullptr ? relaxed_mu(*in.velocity, mu_prime, law_speed(in, i)) : in.mu;
   const double bound = mu * in.pn[i];
   double ux = upx - in.wx[i], uy = upy - in.wy[i];  // adhesion: S = u − u′ + W = 0
   double px = ux / in.flex.l1, py = uy / in.flex.l2;
@@ -73,17 +75,26 @@ SimplifiedFields fastsim(const FastsimInput& in) {
   if (in.velocity != nullptr) out.mu.assign(n, mu_static);
   if (in.steady) {
     // Particles enter at the leading edge unloaded and move one element per step (δq = δx).
+    // With friction memory the first element of a run enters with the law's value at its own
+    // rigid slip velocity, not with μ_static: the memory starts in the steady state
+    // (docs/decisions.md: with μ_static there, tractcurv c109-c113 end their adhesion zones one
+    // element early).
     const bool forward = std::cos(in.chi) >= 0.0;
     for (int iy = 0; iy < grid.my; ++iy) {
-      double upx = 0.0, upy = 0.0, mu_prime = mu_static;
+      double upx = 0.0, upy = 0.0;
+      bool entering = true;
+      double mu_prime = mu_static;
       for (int k = 0; k < grid.mx; ++k) {
         const int ix = forward ? grid.mx - 1 - k : k;
         const std::size_t i = grid.index(ix, iy);
         if (!(in.pn[i] > 0.0)) {
           upx = upy = 0.0;
-          mu_prime = mu_static;
+          entering = true;
           continue;
         }
+        if (entering && in.velocity != nullptr)
+          mu_prime = in.velocity->law->coefficient_at(law_speed(in, i));
+        entering = false;
         const ElementOutcome e = solve_element(in, i, upx, upy, mu_prime, out);
         upx = e.ux;
         upy = e.uy;

@@ -25,9 +25,10 @@ struct SimplifiedFields {
 /// Friction that falls with the slip velocity, with memory (physics.md §10.1-10.2). As in
 /// CONTACT, Fastsim evaluates the law at each element's rigid slip velocity V·|w| (one pass, no
 /// slip-velocity iteration): μ_I = θ·μ′_I + (1 − θ)·μ_s(V|w_I|), θ = d_c/(d_c + δt·max(V|w_I|,
-/// s₀)), μ′ the upstream element's μ (steady) or the previous time's (transient); μ_I·p_n is the
-/// element's traction bound, in adhesion and in slip (docs/decisions.md: CONTACT's tractcurv
-/// cases 91-120 give this FX to the printed digits).
+/// s₀)), μ′ the upstream element's μ (steady; the first element of a row enters with μ_s at its
+/// own rigid slip velocity) or the previous time's (transient); μ_I·p_n is the element's
+/// traction bound, in adhesion and in slip (docs/decisions.md: CONTACT's tractcurv cases 91-120
+/// to the printed digits).
 struct FastsimVelocityFriction {
   const physics::FrictionLaw* law = nullptr;
   double memory_distance_mm = 0.0;       ///< d_c (MEMDST)

@@ -210,24 +210,44 @@ TEST(VelocityDependentFastsim, EveryElementTakesTheLawAtItsRigidSlipVelocity) {
       EXPECT_NEAR(-sol.totals.fx / sol.totals.fn, mu_rigid, 1e-9);
     }
   }
-  // With memory: along each row from the leading edge (χ = 0: ix = MX−1 down) μ approaches
-  // μ_s(Vξ) from μ_static geometrically, μ_k − μ_s = θ^k·(μ_static − μ_s).
+  // With memory the first element of a row enters with μ_s at its own rigid slip velocity (the
+  // memory starts in the steady state, as CONTACT's tractcurv cases show), so under a uniform
+  // rigid slip μ = μ_s(Vξ) everywhere; with spin the rigid slip varies across the patch and
+  // along each row μ_I = θ_I·μ_{I−1} + (1 − θ_I)·μ_s(s_I), s_I = V·|w_I|.
   f.memory_distance_mm = 0.003;
   f.memory_floor_speed_mm_s = 1.0;
   PatchSolver m;
   const Solution mem = m.solve(fastsim_case(f, 0.05));
   ASSERT_TRUE(mem.solver.converged);
-  const double speed = 0.05 * mem.kinematics.veloc, mu_s = law->coefficient_at(speed);
-  const double theta = 0.003 / (0.003 + mem.kinematics.dt * std::max(speed, 1.0));
-  const double mu_static = law->coefficient();
+  const double mu_uniform = law->coefficient_at(0.05 * mem.kinematics.veloc);
+  for (std::size_t i = 0; i < mem.mu.size(); ++i) {
+    if (mem.pn[i] > 0.0) {
+      EXPECT_NEAR(mem.mu[i], mu_uniform, 1e-12);
+    }
+  }
+  model::PatchProblem spin = fastsim_case(f, 0.002);
+  spin.tangential.creepage.spin_rad_per_mm = 2e-4;
+  PatchSolver sp;
+  const Solution ss = sp.solve(spin);
+  ASSERT_TRUE(ss.solver.converged);
+  const double v = ss.kinematics.veloc, dt = ss.kinematics.dt, dq = ss.kinematics.dq;
   int checked = 0;
-  for (int iy = 0; iy < mem.grid.my; ++iy) {
-    int k = 0;
-    for (int ix = mem.grid.mx - 1; ix >= 0; --ix) {
-      const std::size_t i = mem.grid.index(ix, iy);
-      if (mem.pn[i] <= 0.0) continue;
-      ++k;
-      EXPECT_NEAR(mem.mu[i], mu_s + std::pow(theta, k) * (mu_static - mu_s), 1e-12);
+  for (int iy = 0; iy < ss.grid.my; ++iy) {
+    double prev = -1.0;
+    for (int ix = ss.grid.mx - 1; ix >= 0; --ix) {
+      const std::size_t i = ss.grid.index(ix, iy);
+      if (ss.pn[i] <= 0.0) {
+        prev = -1.0;
+        continue;
+      }
+      // Rigid slip w = (ξ − φ·y, φ·(x + δq/6)) (FACPHI offset along χ = 0).
+      const double x = ss.grid.x_centre(ix) + dq / 6.0, y = ss.grid.y_centre(iy);
+      const double s_i = v * std::hypot(0.002 - 2e-4 * y, 2e-4 * x);
+      const double theta = 0.003 / (0.003 + dt * std::max(s_i, 1.0));
+      const double mu_s = law->coefficient_at(s_i);
+      const double expected = prev < 0.0 ? mu_s : theta * prev + (1.0 - theta) * mu_s;
+      EXPECT_NEAR(ss.mu[i], expected, 1e-9) << ix << ", " << iy;
+      prev = ss.mu[i];
       ++checked;
     }
   }

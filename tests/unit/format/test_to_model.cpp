@@ -172,10 +172,14 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r.digits.t = 3;
   r.digits.m = 5;
   r.friction.law = 4;
-  EXPECT_EQ(
-      message_of(r),
-      "not supported yet: friction law L=4 with the simplified theory M=5 (not yet validated: "
-      "forces equal to CONTACT's, adhesion areas one element short in some cases)");
+  EXPECT_EQ(message_of(r),
+            "not supported yet: friction law L=4 with FaStrip M=5 (not yet validated)");
+  r.digits.m = 3;
+  EXPECT_NO_THROW((void)format::to_patch_problem(r));  // steady Fastsim: tractcurv c91-c120
+  r.digits.t = 2;
+  EXPECT_EQ(message_of(r),
+            "not supported yet: friction law L=4 with the simplified theory M=3 in T=2 (steady "
+            "rolling T=3 only; not yet validated)");
   r = basic_record();
   r.digits.h = 3;
   r.digits.t = 2;
