@@ -55,6 +55,7 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
   const std::size_t n = g.gap.size();
   z_locus.assign(n, -kNoWheel);
   g.x_locus.assign(n, 0.0);
+  g.wheel_y.assign(n, 0.0);
   const Mat3& R = pose.wheel_rotation;
   const double r_nom = p.wheelset.nominal_radius_mm;
   const double y_off = prof.wheel_y_offset_mm(), r0 = prof.wheel_r0_mm();
@@ -71,6 +72,7 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
     s.wheel_step_mm = prof.wheel_surface() != nullptr ? 0.0 : step;
   }
   Vec3 prev{};
+  double prev_yp = 0.0;
   bool have_prev = false;
   for (std::size_t k = 0; k <= samples; ++k) {
     const double yp = std::min(wheel.y_min() + step * static_cast<double>(k), wheel.y_max());
@@ -91,6 +93,7 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
     }
     if (have_prev && pt.y != prev.y) {
       const Vec3 a = pt.y < prev.y ? pt : prev, b = pt.y < prev.y ? prev : pt;
+      const double a_yp = pt.y < prev.y ? yp : prev_yp, b_yp = pt.y < prev.y ? prev_yp : yp;
       const double j_lo = std::ceil((a.y - g.y0_mm) / g.dy_mm);
       const double j_hi = std::floor((b.y - g.y0_mm) / g.dy_mm);
       for (double jj = std::max(j_lo, 0.0); jj <= j_hi && jj < static_cast<double>(n); jj += 1.0) {
@@ -100,10 +103,12 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
         if (z > z_locus[j]) {
           z_locus[j] = z;
           g.x_locus[j] = a.x + u * (b.x - a.x);
+          g.wheel_y[j] = a_yp + u * (b_yp - a_yp);
         }
       }
     }
     prev = pt;
+    prev_yp = yp;
     have_prev = true;
   }
 }
@@ -277,20 +282,47 @@ std::vector<ContactRegion> combine(std::vector<ContactRegion> regions,
   return out;
 }
 
+/// Where the gap crosses zero between the interpenetrating sample j and the sample k beyond
+/// it, as the fraction of the way from j to k (linear interpolation).
+double zero_crossing(const GapFunction& g, std::size_t j, std::size_t k) {
+  const double a = g.gap[j], b = g.gap[k];
+  if (!(a < 0.0) || !(b >= 0.0) || b >= 0.5 * kNoWheel) return 1.0;
+  return a / (a - b);
+}
+
+/// The distance between two neighbouring regions along the contact (a below b in y): between
+/// their facing zero crossings of the gap, the mean of the rail's and the wheel's arc lengths —
+/// the length of the curve midway between the profiles, as D=4's curved reference measures.
+double contact_distance(const GapFunction& g, const PlacedProfiles& prof, const ContactRegion& a,
+                        const ContactRegion& b) {
+  const std::size_t a0 = a.last - 1, a1 = a.last, b0 = b.first + 1, b1 = b.first;
+  const double ta = zero_crossing(g, a0, a1), tb = zero_crossing(g, b0, b1);
+  const double ya = g.y(a0) + ta * (g.y(a1) - g.y(a0)), yb = g.y(b0) + tb * (g.y(b1) - g.y(b0));
+  const double wa = g.wheel_y[a0] + ta * (g.wheel_y[a1] - g.wheel_y[a0]);
+  const double wb = g.wheel_y[b0] + tb * (g.wheel_y[b1] - g.wheel_y[b0]);
+  const double y_r = prof.rail_y_mm();
+  const double rail = std::abs(prof.rail().at_y(yb - y_r).s - prof.rail().at_y(ya - y_r).s);
+  const double wheel = std::abs(prof.wheel().at_y(wb).s - prof.wheel().at_y(wa).s);
+  return 0.5 * (rail + wheel);
+}
+
 /// Step 5 for separate neighbours: between D_SEP and D_TURN (and within A_SEP) their reference
 /// angles are turned towards their weight-averaged angle, fully at D_SEP and not at all at
-/// D_TURN, linearly in between (the ramp of the combination factors). CONTACT's exact rule is
-/// not documented: on `mbench_a22_varfric` case 3 this gives δ −0.2521 and −0.2928 rad where
-/// CONTACT prints −0.2480 and −0.2930 (unturned: −0.1326 and −0.2984); docs/decisions.md.
+/// D_TURN, linearly in their distance along the contact (contact_distance). On
+/// `mbench_a22_varfric` case 3 this gives CONTACT's −0.2480 and −0.2930 rad (unturned −0.1326
+/// and −0.2984; the bounding boxes' distance gave −0.2521, the rail's arc alone −0.2482);
+/// docs/decisions.md.
 void turn_neighbour_angles(std::vector<ContactRegion>& patches,
-                           const model::ContactSearchSettings& s) {
+                           const model::ContactSearchSettings& s, const GapFunction& g,
+                           const PlacedProfiles& prof) {
   if (!(s.d_turn_mm > s.d_sep_mm)) return;
   std::vector<double> turned(patches.size());
   for (std::size_t k = 0; k < patches.size(); ++k) turned[k] = patches[k].delta_rad;
   for (std::size_t k = 0; k + 1 < patches.size(); ++k) {
     ContactRegion& a = patches[k];
     ContactRegion& b = patches[k + 1];
-    const double d = box_distance(extent_of(a), extent_of(b));
+    if (box_distance(extent_of(a), extent_of(b)) <= s.d_sep_mm) continue;  // combined instead
+    const double d = contact_distance(g, prof, a, b);
     if (d <= s.d_sep_mm || d > s.d_turn_mm) continue;
     if (std::abs(a.delta_rad - b.delta_rad) > s.a_sep_rad) continue;
     const double f = (s.d_turn_mm - d) / (s.d_turn_mm - s.d_sep_mm);
@@ -394,7 +426,7 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
   }
   res.patches = combine(std::move(regions), p.search);
   for (ContactRegion& r : res.patches) finish_region(r, prof);
-  turn_neighbour_angles(res.patches, p.search);
+  turn_neighbour_angles(res.patches, p.search, g, prof);
   if (res.patches.size() > 10) {
     // Keep the ten deepest.
     std::sort(res.patches.begin(), res.patches.end(),

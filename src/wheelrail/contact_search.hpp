@@ -17,6 +17,7 @@ struct GapFunction {
   double y0_mm = 0.0, dy_mm = 0.0;  ///< y_j = y0 + j·dy
   std::vector<double> gap;          ///< rail z − locus z [mm]; +huge where there is no wheel
   std::vector<double> x_locus;      ///< x of the locus point [mm]
+  std::vector<double> wheel_y;      ///< wheel-profile y of the locus point [mm]
   std::vector<double> rail_angle;   ///< rail surface inclination atan(dz/dy) [rad]
   double y(std::size_t j) const { return y0_mm + dy_mm * static_cast<double>(j); }
 };

@@ -50,10 +50,10 @@ TEST(FrictionVariation, BenchmarkCase4ThroughTheApiGivesContactsNumbers) {
   ASSERT_EQ(s.patches.size(), 1U);
   const WheelRailPatch& w = s.patches[0];
   // CONTACT: DELTCP -0.3363 rad, FSTAT 0.2076, FX(TR) -608.6 N, FY(TR) 1417 N, FN 9907 N.
-  // The coefficient is interpolated at the rail's inclination at the reference point; ours is
-  // 0.3 mrad from what CONTACT's 0.2076 implies (docs/decisions.md), 2e-4 in the coefficient.
+  // The coefficient is interpolated at the contact angle in the wheel-profile frame (δ minus
+  // the wheelset's roll, −0.3358 rad): CONTACT's 0.2076 to its printed digits.
   EXPECT_NEAR(w.contact_angle_rad, -0.3363, 1.05e-4);
-  EXPECT_NEAR(w.friction.static_coefficient, 0.2076, 2e-4);
+  EXPECT_NEAR(w.friction.static_coefficient, 0.2076, 5e-5);
   // Forces within the module-1 validation tolerance: 5e-3 relative + 2e-4·FZ.
   auto tol = [](double f) { return 5e-3 * std::abs(f) + 2.0; };
   EXPECT_NEAR(s.force_tr.x, -608.6, tol(608.6));
@@ -62,10 +62,13 @@ TEST(FrictionVariation, BenchmarkCase4ThroughTheApiGivesContactsNumbers) {
 }
 
 TEST(FrictionVariation, TurnedPatchesAreRefusedThroughTheInpRouteOnly) {
-  // mbench_a22_varfric case 3: tread and flange-root patches 6-12 mm apart, between D_SEP and
-  // D_TURN, whose angles CONTACT turns by a rule not reproduced yet (docs/decisions.md): the
-  // .inp route (validated_only) refuses the case, the API solves it with both angles turned
-  // towards each other (unturned -0.1326 and -0.2984 rad, CONTACT -0.2480 and -0.2930).
+  // mbench_a22_varfric case 3: tread and flange-root patches between D_SEP and D_TURN apart
+  // along the contact (the mean of the rail's and the wheel's arc between the regions' zero
+  // crossings, 6.815 mm), their angles turned towards their weighted mean by (D_TURN − d)/
+  // (D_TURN − D_SEP): CONTACT's −0.2480 and −0.2930 rad (unturned −0.1326 and −0.2984). The
+  // tread patch's force is still 0.8 % above CONTACT's, so the .inp route (validated_only)
+  // refuses the case; the API solves it. V=1 takes the friction at the turned angle in the
+  // wheel's frame: 0.258 on the tread patch, as CONTACT's FS/FN.
   REQUIRE_EXAMPLES();
   const std::filesystem::path dir{ROLLCONTACT_EXAMPLES_DIR};
   const auto cases = format::read_input_cases(dir / "mbench_a22_varfric.inp");
@@ -77,8 +80,9 @@ TEST(FrictionVariation, TurnedPatchesAreRefusedThroughTheInpRouteOnly) {
   const WheelRailSolution s = WheelsetSolver().solve(p);
   ASSERT_TRUE(s.converged) << s.message;
   ASSERT_EQ(s.patches.size(), 2U);
-  EXPECT_LT(s.patches[0].contact_angle_rad, -0.1326 - 0.05);
-  EXPECT_GT(s.patches[1].contact_angle_rad, -0.2984);
+  EXPECT_NEAR(s.patches[0].contact_angle_rad, -0.2480, 1.05e-4);
+  EXPECT_NEAR(s.patches[1].contact_angle_rad, -0.2930, 1.05e-4);
+  EXPECT_NEAR(s.patches[0].friction.static_coefficient, 0.258, 1e-3);
 }
 
 }  // namespace
