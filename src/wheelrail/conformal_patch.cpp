@@ -10,9 +10,6 @@ namespace rollcontact::wheelrail {
 
 namespace {
 
-/// No wheel above the element (the line leaves the wheel profile): never in contact.
-constexpr double kFarAway = 1e3;
-
 /// Per element (ix fastest): the undeformed distance along the row's own normal (before the
 /// approach is split off) and the rail and wheel points on the patch normal through it.
 struct ElementGeometry {
@@ -37,27 +34,16 @@ ElementGeometry element_geometry(const PlacedProfiles& prof, const WheelsetPose&
   for (int j = 0; j < my; ++j) {
     const std::size_t row = static_cast<std::size_t>(j);
     const Vec3 on_line = f.origin + dot(c.point[row] - f.origin, f.es) * f.es;
-    double t_rail = 0.0;
-    if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) continue;
     const double cosine = std::cos(c.alpha[row] - f.delta_rad);
-    double t_wheel = t_rail;
-    CurveHint hint;  // the wheel profile segment, carried along the row
-    for (int i = 0; i < mx; ++i) {
-      const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i) - s.origin_x_mm) * f.ex;
-      // A prismatic rail is the same all along a row; a roller or sliced rail is not.
-      double t_here = t_rail;
-      if (prof.rail_varies_along_x() && !rail_surface_along(prof, point, f.en, t_rail, t_here))
-        continue;
-      if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel, &hint)) {
-        t_wheel = t_here;
-        continue;
-      }
-      const std::size_t e = row * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
-      g.h[e] = (t_here - t_wheel) * cosine;
-      g.rail[e] = point + t_here * f.en;
-      g.wheel[e] = point + t_wheel * f.en;
-      g.found[e] = 1;
-    }
+    trace_row(prof, pose, f, on_line, mx, s.dx_mm, s.ix0, s.origin_x_mm,
+              [&](int i, Vec3 point, double t_rail, double t_wheel) {
+                const std::size_t e =
+                    row * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
+                g.h[e] = (t_rail - t_wheel) * cosine;
+                g.rail[e] = point + t_rail * f.en;
+                g.wheel[e] = point + t_wheel * f.en;
+                g.found[e] = 1;
+              });
   }
   return g;
 }

@@ -15,9 +15,6 @@ namespace rollcontact::wheelrail {
 
 namespace {
 
-/// No wheel above the element (the line leaves the wheel profile): never in contact.
-constexpr double kFarAway = 1e3;
-
 /// Undeformed distance per element along the local normal (ix fastest), minimum shifted to 0.
 /// `rail_n`: the rail surface's normal coordinate per element [mm] (NaN where there is none).
 std::vector<double> undeformed_distance(const PlacedProfiles& prof, const WheelsetPose& pose,
@@ -28,27 +25,15 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
   double h_min = kFarAway;
   for (int j = 0; j < my; ++j) {
     const Vec3 on_line = f.origin + (s.ds_mm * (s.iy0 + j) - s.origin_y_mm) * f.es;
-    double t_rail = 0.0;
-    if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) continue;
-    double t_wheel = t_rail;
-    CurveHint hint;  // the wheel profile segment, carried along the row
-    for (int i = 0; i < mx; ++i) {
-      const Vec3 point = on_line + (s.dx_mm * (s.ix0 + i) - s.origin_x_mm) * f.ex;
-      // A prismatic rail is the same all along a row; a roller or sliced rail is not.
-      double t_rail_here = t_rail;
-      if (prof.rail_varies_along_x() && !rail_surface_along(prof, point, f.en, t_rail, t_rail_here))
-        continue;
-      if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel, &hint)) {
-        t_wheel = t_rail_here;
-        continue;
-      }
-      const double v = t_rail_here - t_wheel;
-      const std::size_t e =
-          static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) + static_cast<std::size_t>(i);
-      h[e] = v;
-      rail_n[e] = t_rail_here;
-      h_min = std::min(h_min, v);
-    }
+    trace_row(prof, pose, f, on_line, mx, s.dx_mm, s.ix0, s.origin_x_mm,
+              [&](int i, Vec3, double t_rail, double t_wheel) {
+                const double v = t_rail - t_wheel;
+                const std::size_t e = static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) +
+                                      static_cast<std::size_t>(i);
+                h[e] = v;
+                rail_n[e] = t_rail;
+                h_min = std::min(h_min, v);
+              });
   }
   pen = -h_min;
   for (double& v : h)

@@ -11,6 +11,7 @@
 #include "wheelrail/contact_search.hpp"
 #include "wheelrail/curved_reference.hpp"
 #include "wheelrail/frames.hpp"
+#include "wheelrail/wheelset_pose.hpp"
 
 namespace rollcontact::wheelrail {
 
@@ -91,6 +92,35 @@ GridAxis cover_axis(double lo_mm, double hi_mm, double h_mm);
 /// True for the tangential problems whose patches live on a super grid (T=1 shifts, T=2
 /// transient rolling).
 bool on_super_grid(const model::WheelRailProblem& problem);
+
+/// The undeformed distance of an element whose line meets no wheel: never in contact [mm].
+inline constexpr double kFarAway = 1e3;
+
+/// One grid row of a patch: from the row's point `on_line` in the patch plane, the lines along
+/// the patch normal f.en through its mx elements (x = dx·(ix0 + i) − origin_x), where they meet
+/// the rail and the wheel (distances t_rail, t_wheel along f.en). Calls visit(i, point, t_rail,
+/// t_wheel) for each element where both are found; nothing when the rail is not below the row.
+/// The wheel's profile segment and distance carry from element to element (a prismatic rail's
+/// distance is the row's; a roller's or sliced rail's is found per element).
+template <class Visit>
+void trace_row(const PlacedProfiles& prof, const WheelsetPose& pose, const ContactFrame& f,
+               Vec3 on_line, int mx, double dx_mm, int ix0, double origin_x_mm, Visit&& visit) {
+  double t_rail = 0.0;
+  if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) return;
+  double t_wheel = t_rail;
+  CurveHint hint;  // the wheel profile segment, carried along the row
+  for (int i = 0; i < mx; ++i) {
+    const Vec3 point = on_line + (dx_mm * (ix0 + i) - origin_x_mm) * f.ex;
+    double t_rail_here = t_rail;
+    if (prof.rail_varies_along_x() && !rail_surface_along(prof, point, f.en, t_rail, t_rail_here))
+      continue;
+    if (!wheel_surface_along(prof, pose, point, f.en, t_wheel, t_wheel, &hint)) {
+      t_wheel = t_rail_here;
+      continue;
+    }
+    visit(i, point, t_rail_here, t_wheel);
+  }
+}
 
 /// Builds the patch problem of `region`; the grid is coarsened (DX, DS doubled) until it has
 /// fewer than NPOT_MAX elements (not on a super grid). `warnings` receives such adjustments.
