@@ -185,12 +185,7 @@ TEST(ConformalContact, LeftWheelMirrorsTheRightOne) {
   right.motion.yaw_rad = 0.004;
   right.motion.vy_mm_s = 3.0;
   right.search.conformal = true;
-  model::WheelRailProblem left = right;
-  left.side = model::WheelSide::Left;
-  left.motion.y_mm = -right.motion.y_mm;
-  left.motion.yaw_rad = -right.motion.yaw_rad;
-  left.motion.vy_mm_s = -right.motion.vy_mm_s;
-  left.track.rail_y0_mm = -right.track.rail_y0_mm;
+  const model::WheelRailProblem left = test_support::mirrored_left(right);
   const WheelRailSolution r = WheelsetSolver().solve(right);
   const WheelRailSolution l = WheelsetSolver().solve(left);
   ASSERT_EQ(r.patches.size(), 1U);

@@ -125,17 +125,7 @@ TEST(FlexibleWheelset, LeftWheelIsTheMirrorImageOfTheRightOne) {
   model::WheelRailProblem right = rolling_cone();
   right.motion.y_mm = 1.0;
   right.wheel_deviation = {0.3, 0.5, 0.01, 0.001, 0.004, 0.0, 1.0, 2.0, 0.0, 0.01, 0.02, 0.0};
-  model::WheelRailProblem left = right;  // track-signed inputs mirrored
-  left.side = model::WheelSide::Left;
-  left.motion.y_mm = -right.motion.y_mm;
-  left.track.rail_y0_mm = -right.track.rail_y0_mm;
-  model::WheelDeviation& d = left.wheel_deviation;
-  d.dy_mm = -d.dy_mm;
-  d.droll_rad = -d.droll_rad;
-  d.dyaw_rad = -d.dyaw_rad;
-  d.vy_mm_s = -d.vy_mm_s;
-  d.vroll_rad_s = -d.vroll_rad_s;
-  d.vyaw_rad_s = -d.vyaw_rad_s;
+  const model::WheelRailProblem left = test_support::mirrored_left(right);  // deviations too
   const WheelRailSolution r = solve(right), l = solve(left);
   ASSERT_EQ(r.patches.size(), 1u);
   ASSERT_EQ(l.patches.size(), 1u);

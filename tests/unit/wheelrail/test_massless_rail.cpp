@@ -248,12 +248,7 @@ TEST(MasslessRail, LeftWheelIsTheMirrorImage) {
   right.motion.y_mm = 1.5;
   right.motion.yaw_rad = 0.004;
   right = on_massless_rail(right, 2e4, 800.0, 1e5, 200.0);
-  model::WheelRailProblem left = right;
-  left.side = model::WheelSide::Left;
-  left.motion.y_mm = -right.motion.y_mm;
-  left.motion.yaw_rad = -right.motion.yaw_rad;
-  left.track.rail_y0_mm = -right.track.rail_y0_mm;
-  left.massless_rail.fy_N = -right.massless_rail.fy_N;
+  const model::WheelRailProblem left = test_support::mirrored_left(right);
   const WheelRailSolution r = WheelsetSolver().solve(right), l = WheelsetSolver().solve(left);
   ASSERT_TRUE(r.converged && l.converged) << r.message << l.message;
   EXPECT_NE(r.rail_deflection.dy_mm, 0.0);

@@ -183,11 +183,7 @@ TEST(RollerRig, LeftRollerIsTheMirrorImageOfTheRightOne) {
   right.motion.fz_N = 10000.0;
   right.motion.yaw_rad = 0.004;
   right.motion.vy_mm_s = 2.0;
-  model::WheelRailProblem left = right;  // inputs in track coordinates: lateral ones mirrored
-  left.side = model::WheelSide::Left;
-  left.motion.yaw_rad = -right.motion.yaw_rad;
-  left.motion.vy_mm_s = -right.motion.vy_mm_s;
-  left.track.rail_y0_mm = -right.track.rail_y0_mm;
+  const model::WheelRailProblem left = test_support::mirrored_left(right);
   WheelsetSolver a, b;
   const WheelRailSolution sr = a.solve(right), sl = b.solve(left);
   ASSERT_EQ(sr.patches.size(), 1u);

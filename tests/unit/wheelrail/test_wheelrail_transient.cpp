@@ -68,10 +68,9 @@ TEST(WheelRailTransient, RollingFromRestReachesTheSteadyState) {
         << "step " << k;
 }
 
-TEST(WheelRailTransient, ShiftWithZeroIncrementsKeepsTheTractions) {
-  // T=1: the velocity line holds the increments of one step. A lateral shift of the wheelset by
-  // 2 µm loads the contact sideways (Cattaneo); a case with zero increments keeps that load; a
-  // second shift of 2 µm adds to it.
+/// The crowned rail under a cylinder at 10 kN shifted sideways (T=1: the velocity line holds
+/// one step's increments): the wheelset moves by 2 µm laterally, nothing else.
+model::WheelRailProblem lateral_shift() {
   model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
   p.patch.tangential.kind = model::TangentialKind::Shift;
   p.vertical = model::VerticalLoading::Force;
@@ -79,6 +78,14 @@ TEST(WheelRailTransient, ShiftWithZeroIncrementsKeepsTheTractions) {
   p.motion.vs_mm_s = 0.0;
   p.motion.vpitch_rad_s = 0.0;
   p.motion.vy_mm_s = 0.002;
+  return p;
+}
+
+TEST(WheelRailTransient, ShiftWithZeroIncrementsKeepsTheTractions) {
+  // T=1: the velocity line holds the increments of one step. A lateral shift of the wheelset by
+  // 2 µm loads the contact sideways (Cattaneo); a case with zero increments keeps that load; a
+  // second shift of 2 µm adds to it.
+  model::WheelRailProblem p = lateral_shift();
   WheelsetSolver solver;
   p.patch.sequence.continue_previous = false;
   const WheelRailSolution first = solver.solve(p);
@@ -177,16 +184,10 @@ TEST(WheelRailTransient, ConformalRollingFromRestReachesTheConformalSteadyState)
 
 TEST(WheelRailTransient, ConformalShiftWithZeroIncrementsKeepsTheTractions) {
   // T=1 with D=4: a lateral shift of 2 µm, then a case with zero increments keeps the load.
-  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
-  p.patch.tangential.kind = model::TangentialKind::Shift;
-  p.vertical = model::VerticalLoading::Force;
-  p.motion.fz_N = 10000.0;
-  p.motion.vs_mm_s = 0.0;
-  p.motion.vpitch_rad_s = 0.0;
+  model::WheelRailProblem p = lateral_shift();
   p.search.conformal = true;
   WheelsetSolver solver;
   p.first_of_sequence = true;
-  p.motion.vy_mm_s = 0.002;
   const WheelRailSolution a = solver.solve(p);
   ASSERT_TRUE(a.converged) << a.message;
   ASSERT_EQ(a.patches.size(), 1u);

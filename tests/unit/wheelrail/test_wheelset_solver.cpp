@@ -124,12 +124,7 @@ TEST(WheelsetSolver, LeftWheelIsTheMirrorImageOfTheRightOne) {
   right.motion.y_mm = 1.5;
   right.motion.yaw_rad = 0.004;
   right.motion.vy_mm_s = 3.0;
-  model::WheelRailProblem left = right;
-  left.side = model::WheelSide::Left;
-  left.motion.y_mm = -right.motion.y_mm;
-  left.motion.yaw_rad = -right.motion.yaw_rad;
-  left.motion.vy_mm_s = -right.motion.vy_mm_s;
-  left.track.rail_y0_mm = -right.track.rail_y0_mm;  // inputs are track coordinates
+  const model::WheelRailProblem left = test_support::mirrored_left(right);
   WheelsetSolver a, b;
   const WheelRailSolution r = a.solve(right), l = b.solve(left);
   ASSERT_EQ(r.patches.size(), 1u);

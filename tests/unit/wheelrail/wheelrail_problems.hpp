@@ -52,4 +52,26 @@ inline model::WheelRailProblem crowned_rail_problem(double rail_radius_mm, doubl
   return p;
 }
 
+/// The same problem on a left wheel: its inputs are track coordinates in the left wheel's
+/// mirrored frame, so every lateral input changes sign — the wheelset's lateral position, yaw
+/// and lateral velocity, the rail's absolute lateral placement, the wheel's lateral deviations
+/// and their rates, and the massless rail's lateral load. The left wheel's results are then the
+/// right's with their lateral components mirrored.
+inline model::WheelRailProblem mirrored_left(model::WheelRailProblem p) {
+  p.side = model::WheelSide::Left;
+  p.motion.y_mm = -p.motion.y_mm;
+  p.motion.yaw_rad = -p.motion.yaw_rad;
+  p.motion.vy_mm_s = -p.motion.vy_mm_s;
+  p.track.rail_y0_mm = -p.track.rail_y0_mm;
+  model::WheelDeviation& d = p.wheel_deviation;
+  d.dy_mm = -d.dy_mm;
+  d.droll_rad = -d.droll_rad;
+  d.dyaw_rad = -d.dyaw_rad;
+  d.vy_mm_s = -d.vy_mm_s;
+  d.vroll_rad_s = -d.vroll_rad_s;
+  d.vyaw_rad_s = -d.vyaw_rad_s;
+  p.massless_rail.fy_N = -p.massless_rail.fy_N;
+  return p;
+}
+
 }  // namespace rollcontact::test_support
