@@ -13,9 +13,6 @@ namespace rollcontact::format::report {
 
 namespace {
 
-std::string sig(double v) {
-  return fmt_sig(12, 4, 4, v);
-}
 double degrees(double rad) {
   return rad * 180.0 / std::numbers::pi;
 }

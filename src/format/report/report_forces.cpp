@@ -12,11 +12,6 @@
 #include "format/report/report_values.hpp"
 
 namespace rollcontact::format::report {
-namespace {
-std::string sig(double v) {
-  return fmt_sig(12, 4, 4, v);
-}
-}  // namespace
 
 void write_force_block(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;

@@ -16,6 +16,9 @@ void line(std::ostream& os, std::string_view text);
 /// Fortran a12 of a label: left-aligned, padded with blanks to 12 characters.
 std::string a12(std::string_view label);
 
+/// The reports' usual real field: 12 wide, 4 significant digits (fmt_sig(12, 4, 4, v)).
+std::string sig(double v);
+
 /// Module-3 parameter blocks printed for O >= 2 (digit echo up to kinematic constants).
 void write_parameter_blocks(std::ostream& os, const CaseRecord& problem, const Solution& solution);
 

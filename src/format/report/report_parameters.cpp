@@ -20,9 +20,6 @@ namespace {
 std::string g12(double v) {
   return fortran_g(v, 12, 4);
 }
-std::string sig(double v) {
-  return fmt_sig(12, 4, 4, v);
-}
 std::string i2(int v) {
   return fortran_i(v, 2);
 }

@@ -21,10 +21,7 @@ namespace rollcontact::format {
 namespace {
 
 using report::line;
-
-std::string sig(double v) {
-  return fmt_sig(12, 4, 4, v);
-}
+using report::sig;
 std::string f4(double v) {
   return fortran_f(v, 12, 4);
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "format/report/number_format.hpp"
 #include "format/report/report_internal.hpp"
 #include "format/report/report_subsurface.hpp"
 #include "format/report/report_values.hpp"
@@ -26,6 +27,10 @@ std::string a12(std::string_view label) {
   std::string s(label.substr(0, 12));
   s.resize(12, ' ');
   return s;
+}
+
+std::string sig(double v) {
+  return fmt_sig(12, 4, 4, v);
 }
 
 }  // namespace report
