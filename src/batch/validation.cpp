@@ -135,8 +135,9 @@ ExampleResult validate_example(const ExampleFiles& example, const std::filesyste
     mark_all(result, reference, CaseStatus::Failed, result.run_error);
   } else {
     try {
-      result.cases =
-          compare_reports(format::parse_report_file(run.report), reference, options.tolerances);
+      result.cases = compare_reports(
+          format::parse_report_file(run.report), reference,
+          tolerances_for_example(options.tolerances, example.input.stem().string()));
       mark_not_converged(result, run.json);
     } catch (const std::exception& e) {
       result.run_error = e.what();

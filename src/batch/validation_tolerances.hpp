@@ -33,6 +33,10 @@ struct ToleranceTable {
 /// The tolerances rollcontact is validated with.
 ToleranceTable default_tolerances();
 
+/// The tolerances for one example (the stem of its .inp): `base` with the example-specific
+/// entries of spec/validation.md §3 (`wheelflat`: forces 1 %, PMAX 2 %).
+ToleranceTable tolerances_for_example(ToleranceTable base, std::string_view example_stem);
+
 /// The allowed difference for `reference` given the case's normal force `fn`.
 double allowed_difference(const Tolerance& tolerance, double reference, double fn);
 

@@ -164,7 +164,8 @@ void minimise_gap_along_x(const PlacedProfiles& prof, const WheelsetPose& pose, 
 }
 
 ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std::size_t first,
-                          std::size_t last, double c, bool linear_weights) {
+                          std::size_t last, double c, bool linear_weights,
+                          const std::vector<SampleMoments>& sliced) {
   ContactRegion r;
   r.first = first;
   r.last = last;
@@ -174,14 +175,26 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
   for (std::size_t j = first; j <= last; ++j) {
     const double pen = -g.gap[j];
     if (!(pen > 0.0)) continue;
-    const double w = gap_sample_weight(pen, c, linear_weights);
-    r.weight += w;
-    r.wx += w * g.x_locus[j];
-    r.wy += w * g.y(j);
-    r.wd += w * g.rail_angle[j];
-    const double t0 = std::sqrt(pen / c);
-    r.x_min = std::min(r.x_min, g.x_locus[j] - t0);
-    r.x_max = std::max(r.x_max, g.x_locus[j] + t0);
+    if (!sliced.empty()) {
+      // A sliced wheel: the integrals over its actual height along x (sliced_weights.hpp).
+      const SampleMoments& m = sliced[j];
+      if (!(m.weight > 0.0)) continue;
+      r.weight += m.weight;
+      r.wx += m.weight_x;
+      r.wy += m.weight * g.y(j);
+      r.wd += m.weight * g.rail_angle[j];
+      r.x_min = std::min(r.x_min, m.x_min);
+      r.x_max = std::max(r.x_max, m.x_max);
+    } else {
+      const double w = gap_sample_weight(pen, c, linear_weights);
+      r.weight += w;
+      r.wx += w * g.x_locus[j];
+      r.wy += w * g.y(j);
+      r.wd += w * g.rail_angle[j];
+      const double t0 = std::sqrt(pen / c);
+      r.x_min = std::min(r.x_min, g.x_locus[j] - t0);
+      r.x_max = std::max(r.x_max, g.x_locus[j] + t0);
+    }
     r.min_gap = std::min(r.min_gap, g.gap[j]);
   }
   r.y_min = g.y(first);
@@ -190,6 +203,26 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
   r.z_min = std::min(za, zb);
   r.z_max = std::max(za, zb);
   return r;
+}
+
+/// A sliced wheel's weight integrals at every interpenetrating sample (its heights along x
+/// sampled on first use, every DX/2: XCP on `wheelflat` moves by less than 1e-4 mm from DX/8 to
+/// DX).
+std::vector<SampleMoments> sliced_sample_moments(const model::WheelRailProblem& p,
+                                                 const PlacedProfiles& prof, GapSamples& s,
+                                                 const GapFunction& g, double z_ws) {
+  std::vector<SampleMoments> out(g.gap.size());
+  s.heights_along_x.resize(g.gap.size());
+  for (std::size_t j = 0; j < g.gap.size(); ++j) {
+    if (!(g.gap[j] < 0.0)) continue;
+    HeightsAlongX& h = s.heights_along_x[j];
+    if (h.empty())
+      h = wheel_heights_along_x(prof, s.pose_at_zero, g.y(j), g.x_locus[j], s.locus_z[j],
+                                0.5 * p.search.dx_mm);
+    const double drop = s.rail_drop.empty() ? 0.0 : s.rail_drop[j];
+    out[j] = gap_moments_along_x(h, s.rail_z[j] + drop, z_ws, p.search.linear_gap_weights);
+  }
+  return out;
 }
 
 /// Reference point and angle from the accumulated weights (physics.md §13.3 step 4).
@@ -372,6 +405,8 @@ GapSamples sample_rail(const model::WheelRailProblem& p, const PlacedProfiles& p
 void sample_wheel(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                   const WheelsetPose& pose_at_zero, GapSamples& s) {
   fill_locus(p, prof, pose_at_zero, s);
+  s.heights_along_x.clear();
+  if (prof.wheel_surface() != nullptr) s.pose_at_zero = pose_at_zero;
   if (p.search.method == model::ContactSearch::GapGrid)
     minimise_gap_along_x(prof, pose_at_zero, s.base, s.locus_z);
   s.rail_drop.clear();
@@ -388,7 +423,7 @@ void sample_wheel(const model::WheelRailProblem& p, const PlacedProfiles& prof,
 }
 
 SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfiles& prof,
-                            const GapSamples& samples, double z_ws) {
+                            GapSamples& samples, double z_ws) {
   SearchResult res;
   GapFunction& g = res.gap;
   g = samples.base;
@@ -412,6 +447,9 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
 
   // Regions: maximal runs of negative gap, one guard sample on each side.
   const double c = rolling_curvature_per_mm(p);
+  const std::vector<SampleMoments> sliced = prof.wheel_surface() != nullptr
+                                                ? sliced_sample_moments(p, prof, samples, g, z_ws)
+                                                : std::vector<SampleMoments>{};
   std::vector<ContactRegion> regions;
   for (std::size_t j = 0; j < n;) {
     if (!(g.gap[j] < 0.0)) {
@@ -421,7 +459,7 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
     std::size_t e = j;
     while (e + 1 < n && g.gap[e + 1] < 0.0) ++e;
     regions.push_back(make_region(g, prof, j > 0 ? j - 1 : j, e + 1 < n ? e + 1 : e, c,
-                                  p.search.linear_gap_weights));
+                                  p.search.linear_gap_weights, sliced));
     j = e + 1;
   }
   res.patches = combine(std::move(regions), p.search);

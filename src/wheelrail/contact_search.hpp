@@ -8,6 +8,7 @@
 
 #include "rollcontact/model/wheelrail.hpp"
 #include "wheelrail/placed_profiles.hpp"
+#include "wheelrail/sliced_weights.hpp"
 #include "wheelrail/wheelset_pose.hpp"
 
 namespace rollcontact::wheelrail {
@@ -73,6 +74,11 @@ struct GapSamples {
   /// a sliced wheel's cross-section changes with its rotation).
   std::vector<CurvePoint> wheel_points;
   double wheel_step_mm = 0.0;
+  /// A sliced wheel: its pose at z_ws = 0 and, per lateral sample, its height along x there
+  /// (the reference point's weights, sliced_weights.hpp). Filled by search_contact for the
+  /// samples that interpenetrate, when first needed; empty for a plain wheel.
+  WheelsetPose pose_at_zero;
+  std::vector<HeightsAlongX> heights_along_x;
 };
 
 /// Weight of one interpenetrating gap sample of depth pen [mm] with the rolling curvature c
@@ -91,8 +97,9 @@ GapSamples sample_rail(const model::WheelRailProblem& problem, const PlacedProfi
 void sample_wheel(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
                   const WheelsetPose& pose_at_zero, GapSamples& samples);
 
-/// Runs the search at wheelset height z_ws [mm]. No exception for a miss: no patches.
+/// Runs the search at wheelset height z_ws [mm]. No exception for a miss: no patches. A sliced
+/// wheel's heights along x are added to `samples` where they are first needed.
 SearchResult search_contact(const model::WheelRailProblem& problem, const PlacedProfiles& profiles,
-                            const GapSamples& samples, double z_ws_mm);
+                            GapSamples& samples, double z_ws_mm);
 
 }  // namespace rollcontact::wheelrail

@@ -33,6 +33,19 @@ CaseStatus status_of(const format::ReportCase& ours, const format::ReportCase& r
   return compare_case(&ours, ref, default_tolerances()).status;
 }
 
+TEST(ValidationTolerances, WheelFlatForcesOnePercentPmaxTwo) {
+  // validation.md §3: `wheelflat` (slices, out-of-round) 1 % forces, 2 % PMAX; the rest, and
+  // every other example, as the default table.
+  const ToleranceTable flat = tolerances_for_example(default_tolerances(), "wheelflat");
+  const ToleranceTable other = tolerances_for_example(default_tolerances(), "mbench_a22_left");
+  EXPECT_NEAR(allowed_difference(*flat.find("FY(TR)"), -439.1, 1.25e5), 4.391 + 25.0, 1e-6);
+  EXPECT_NEAR(allowed_difference(*flat.find("patch 1/FS"), 5191.0, 1.25e5), 51.91 + 25.0, 1e-6);
+  EXPECT_NEAR(allowed_difference(*flat.find("patch 1/PMAX"), 1570.0, 1.25e5), 31.4, 1e-6);
+  EXPECT_NEAR(allowed_difference(*other.find("FY(TR)"), -439.1, 1.25e5), 2.1955 + 25.0, 1e-6);
+  EXPECT_NEAR(allowed_difference(*flat.find("patch 1/XCP(TR)"), 11.0, 1.25e5), 5e-3, 1e-9);
+  EXPECT_NEAR(allowed_difference(*flat.find("patch 1/MN"), 2500.0, 1.25e5), 12.5 + 125.0, 1e-6);
+}
+
 TEST(ValidationTolerances, TableHasTheContractQuantities) {
   const auto t = default_tolerances();
   for (const char* name : {"FN", "FX", "FY", "MZ", "APPROACH", "PMAX", "CREEP X", "CREEP Y",
