@@ -82,10 +82,10 @@ void check_supported(const WheelRailRecord& r) {
   // between D_SEP and D_TURN, is refused by the solver (validated_only) until the turning rule
   // agrees (docs/decisions.md).
   // The wheel/rail solver takes sliced wheels (model::WheelRailProfile::slices); on `wheelflat`
-  // it gives CONTACT's z_ws in every case and its forces within 0.5 % away from the flat, but
-  // the contact location near and on the flat differs by 0.006-1 mm (the tolerance is 5e-3 mm:
-  // CONTACT's iterative locus is not documented well enough to reproduce), so the .inp route
-  // waits (docs/decisions.md, "Variable wheel profiles").
+  // it gives CONTACT's z_ws in every case and 11 of the 26 cases within the validation
+  // tolerances, but where the contact meets the flat's edges its location differs by
+  // 0.008-0.08 mm (the tolerance is 5e-3 mm), so the .inp route waits (docs/decisions.md,
+  // "Variable wheel profiles").
   if (r.wheel.sliced)
     not_supported(
         "variable wheel profiles (wheel slices files; not yet validated: contact location on "
