@@ -74,6 +74,7 @@ struct RunSettings {
   bool measure = false;
   bool quiet = false;
   bool timing = false;
+  bool unvalidated = false;
   int threads = 1;
 };
 
@@ -91,6 +92,7 @@ batch::RunOptions solver_run_options(const RunSettings& settings) {
   options.output_dir = settings.output_dir;
   options.solve.fft = parse_backend(settings.backend);
   options.solve.fft_planning = settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
+  options.solve_unvalidated = settings.unvalidated;
   return options;
 }
 
@@ -274,6 +276,11 @@ CommandRunner add_run_command(CLI::App& app, batch::Distribution& distribution) 
                   "one thread")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  cmd->add_flag("--unvalidated", settings->unvalidated,
+                "also solve the wheel/rail features whose results are known to differ from "
+                "CONTACT's references (wheel slices near a flat, KPEC beyond its ellipse, ANALYN "
+                "on combined regions, D_TURN-turned patches), each case with a warning, instead "
+                "of refusing them (docs/decisions.md)");
   return [settings, &distribution] {
     if (settings->inputs.size() > 1) return run_files(*settings, distribution);
     return run_job(settings->inputs.front(), *settings, false, &distribution);

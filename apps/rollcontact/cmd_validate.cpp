@@ -34,6 +34,7 @@ struct ValidateSettings {
   bool verbose = false;
   bool quiet = false;
   bool in_process = false;
+  bool unvalidated = false;
 };
 
 extern "C" char** environ;  // NOLINT: POSIX, passed on to the child
@@ -48,7 +49,7 @@ std::string read_text(const std::filesystem::path& path) {
 /// Runs `rollcontact run FILE.inp -o OUT -q` as a child process of this very executable: a
 /// crash or abort in one example then fails that example instead of the whole validation.
 batch::ExampleRun run_in_child(const batch::ExampleFiles& example, const std::filesystem::path& out,
-                               const std::string& backend) {
+                               const std::string& backend, bool unvalidated) {
   batch::ExampleRun run;
   std::error_code ec;
   const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
@@ -60,6 +61,7 @@ batch::ExampleRun run_in_child(const batch::ExampleFiles& example, const std::fi
   const auto log = out / (example.name + ".stderr");
   std::vector<std::string> args{
       self.string(), "run", example.input.string(), "-o", out.string(), "-q", "--fft", backend};
+  if (unvalidated) args.emplace_back("--unvalidated");
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -112,10 +114,11 @@ int run_validation(const ValidateSettings& s) {
   options.jobs = s.jobs;
   options.output_dir = s.keep;
   options.solve.fft = backend_kind(s.backend);
+  options.solve_unvalidated = s.unvalidated;
   if (!s.in_process) {
-    options.runner = [backend = s.backend](const batch::ExampleFiles& e,
-                                           const std::filesystem::path& out) {
-      return run_in_child(e, out, backend);
+    options.runner = [backend = s.backend, unvalidated = s.unvalidated](
+                         const batch::ExampleFiles& e, const std::filesystem::path& out) {
+      return run_in_child(e, out, backend, unvalidated);
     };
   }
   if (!s.quiet) options.on_example = print_progress;
@@ -165,6 +168,9 @@ CommandRunner add_validate_command(CLI::App& app) {
   cmd->add_flag("-v,--verbose", settings->verbose,
                 "per-case details: every compared quantity, ours vs reference");
   cmd->add_flag("-q,--quiet", settings->quiet, "no progress lines on stderr");
+  cmd->add_flag("--unvalidated", settings->unvalidated,
+                "compare also the wheel/rail cases a plain run refuses as not yet validated "
+                "(`rollcontact run --unvalidated`): where they stand");
   return [settings] { return run_validation(*settings); };
 }
 

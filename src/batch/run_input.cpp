@@ -106,7 +106,8 @@ CaseOutcome solve_module1(const format::WheelRailRecord& record, RunState& state
     it = state.wheelset_solvers.try_emplace(record.result_element, state.options.solve).first;
   try {
     if (!record.source.case_error.empty()) throw ProblemError(record.source.case_error);
-    const model::WheelRailProblem problem = format::to_wheelrail_problem(record);
+    const model::WheelRailProblem problem =
+        format::to_wheelrail_problem(record, state.options.solve_unvalidated);
     outcome.wheelrail = it->second.solve(problem);
     outcome.solved = true;
     auto& warnings = outcome.wheelrail.warnings;

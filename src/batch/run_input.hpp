@@ -48,6 +48,10 @@ struct RunOptions {
   /// and JSON — the bytes of a one-process run. RunResult::cases stay empty and on_case is not
   /// called then; the other processes' RunResult is empty. Null or one process: this one.
   Distribution* distribution = nullptr;
+  /// Solve the wheel/rail features whose results are known to differ from CONTACT's (wheel
+  /// slices, KPEC beyond its ellipse, ...) with a warning each instead of refusing them
+  /// (model::WheelRailProblem::validated_only).
+  bool solve_unvalidated = false;
 };
 
 /// Where the wall time of a run went [s] (one thread: with threads > 1 set-up and solve are

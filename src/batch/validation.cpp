@@ -82,11 +82,12 @@ std::vector<ExampleFiles> find_examples(const std::filesystem::path& dir) {
 
 ExampleRun run_example_in_process(const ExampleFiles& example,
                                   const std::filesystem::path& output_dir,
-                                  const SolveOptions& solve) {
+                                  const SolveOptions& solve, bool solve_unvalidated) {
   ExampleRun run;
   RunOptions options;
   options.output_dir = output_dir;
   options.solve = solve;
+  options.solve_unvalidated = solve_unvalidated;
   try {
     const RunResult result = run_input_file(example.input, options);
     run.report = result.report_path;
@@ -120,7 +121,8 @@ ExampleResult validate_example(const ExampleFiles& example, const std::filesyste
   ExampleRun run;
   try {
     run = options.runner ? options.runner(example, output_dir)
-                         : run_example_in_process(example, output_dir, options.solve);
+                         : run_example_in_process(example, output_dir, options.solve,
+                                                  options.solve_unvalidated);
     if (run.input_error.empty() && run.failure.empty() && run.report.empty())
       run.failure = "the run wrote no report";
   } catch (const std::exception& e) {

@@ -59,7 +59,7 @@ using ExampleRunner =
 /// The runner used when ValidationOptions::runner is empty: format::run_input_file in this process.
 ExampleRun run_example_in_process(const ExampleFiles& example,
                                   const std::filesystem::path& output_dir,
-                                  const SolveOptions& solve);
+                                  const SolveOptions& solve, bool solve_unvalidated = false);
 
 struct ValidationOptions {
   ToleranceTable tolerances = default_tolerances();
@@ -68,6 +68,9 @@ struct ValidationOptions {
   /// that is removed afterwards.
   std::filesystem::path output_dir;
   SolveOptions solve;  ///< for the in-process runner
+  /// The in-process runner solves the features a plain run refuses as not yet validated
+  /// (RunOptions::solve_unvalidated); the CLI's child runner passes `--unvalidated`.
+  bool solve_unvalidated = false;
   /// How an example is run; empty: run_example_in_process. The CLI runs `rollcontact run` in a
   /// child process so that a crashing example cannot take the whole validation down.
   ExampleRunner runner;

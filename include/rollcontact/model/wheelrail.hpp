@@ -212,9 +212,12 @@ struct WheelRailProblem {
   /// of an MBS code, whose consecutive cases differ little.
   bool estimate_from_previous_case = false;
   FrictionVariation friction_variation;  ///< V=1, 2; Along::None: patch.friction
-  /// Refuse (NotSupportedError) the patches whose results are known to differ from CONTACT's
-  /// (docs/decisions.md, "KPEC"): KPEC with interpenetration beyond the equivalent ellipse and
-  /// ANALYN on a patch combined from several regions. The `.inp` route sets it.
+  /// Refuse (NotSupportedError) what is known to differ from CONTACT's references
+  /// (docs/decisions.md): KPEC with interpenetration beyond the equivalent ellipse, ANALYN on a
+  /// patch combined from several regions, patches whose angles the D_TURN rule turned, and
+  /// wheel slices (the contact location on a flat). False: solve them, each with a warning in
+  /// WheelRailSolution::warnings ("not validated against CONTACT: ..."). The `.inp` route sets
+  /// it unless the run asks for unvalidated features (`rollcontact run --unvalidated`).
   bool validated_only = false;
 };
 

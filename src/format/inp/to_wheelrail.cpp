@@ -81,22 +81,16 @@ void check_supported(const WheelRailRecord& r) {
   // mbench_a22_varfric cases 1, 2, 4 and 6 give CONTACT's digits. Case 3, whose two patches lie
   // between D_SEP and D_TURN, is refused by the solver (validated_only) until the turning rule
   // agrees (docs/decisions.md).
-  // The wheel/rail solver takes sliced wheels (model::WheelRailProfile::slices); on `wheelflat`
-  // it gives CONTACT's z_ws in every case and 11 of the 26 cases within the validation
-  // tolerances, but where the contact meets the flat's edges its location differs by
-  // 0.008-0.08 mm (the tolerance is 5e-3 mm), so the .inp route waits (docs/decisions.md,
-  // "Variable wheel profiles").
-  if (r.wheel.sliced)
-    not_supported(
-        "variable wheel profiles (wheel slices files; not yet validated: contact location on "
-        "the flat)");
+  // Wheel slices (wheelflat): refused by the solver unless the run solves unvalidated
+  // features (model::WheelRailProblem::validated_only; docs/decisions.md, "Variable wheel
+  // profiles").
   // Flash temperatures per patch as in module 3 (spec/physics.md §15), steady rolling and
   // static cases only, like module 3.
   if (d.h != 0 && d.t != 0 && d.t != 3)
     not_supported(fmt::format("temperature H={} with T={} (steady rolling only)", d.h, d.t));
 }
 
-model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
+model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r, bool solve_unvalidated) {
   check_supported(r);
   model::WheelRailProblem p;
   p.side = r.is_left() ? model::WheelSide::Left : model::WheelSide::Right;
@@ -147,7 +141,7 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r) {
   p.search.conformal = ds.method == 4;
   p.first_of_sequence = r.case_number == 1;
   p.estimate_from_previous_case = r.digits.i >= 1;
-  p.validated_only = true;
+  p.validated_only = !solve_unvalidated;
   const VariableFriction& vf = r.variable_friction;
   if (vf.v == 1 || vf.v == 2) {
     p.friction_variation.along = vf.v == 1 ? model::FrictionVariation::Along::RailInclination

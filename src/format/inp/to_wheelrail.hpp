@@ -23,7 +23,11 @@ model::WheelRailProfile to_wheelrail_profile(const ProfileSpec& spec);
 /// the patch template start from it.
 CaseRecord settings_record(const WheelRailRecord& record);
 
-/// The physics of `record`. Calls check_supported() first.
-model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& record);
+/// The physics of `record`. Calls check_supported() first. `solve_unvalidated`: the problem
+/// solves features whose results are known to differ from CONTACT's, with a warning each
+/// (model::WheelRailProblem::validated_only false; `rollcontact run --unvalidated`); by default
+/// the solver refuses them.
+model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& record,
+                                             bool solve_unvalidated = false);
 
 }  // namespace rollcontact::format

@@ -94,6 +94,15 @@ TEST(ApproximateWheelRail, CasesThatDifferAreRefused) {
   const WheelRailSolution s = solver.solve(p);
   EXPECT_TRUE(s.converged) << s.message;
   EXPECT_NEAR(s.force_tr.z, kFz, 1e-3 * kFz);
+  const auto said = [&](const std::string& what) {
+    for (const std::string& w : s.warnings)
+      if (w.find("not validated against CONTACT: " + what) != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_TRUE(said("ANALYN (B=6) on a patch combined")) << s.warnings.size();
+  // The same through the .inp conversion's switch (`rollcontact run --unvalidated`).
+  EXPECT_FALSE(format::to_wheelrail_problem(std::get<format::WheelRailRecord>(cases.at(0)), true)
+                   .validated_only);
 }
 
 }  // namespace
