@@ -57,7 +57,16 @@ CONTACT_PEAK_MB = {("normal", 3): 654.0}
 # CONTACT's own example inputs of issue 16 (../shared/reference/contact-examples) with CONTACT's
 # whole-process wall time [s]: tractcurv from the issue (gfortran -O2, this machine class), the
 # others from the "Total" wall clock their .ref_out prints (carter2d prints 0.0: under 0.05 s).
-EXAMPLE_CONTACT_SECONDS = {"spence35": 2.3, "carter2d": None, "catt_to_cart": 2.6, "tractcurv": 19.0}
+# mbench_a22_varfric has two conformal flange-root patches (D=4, cases 5 and 7); wheelflat is a
+# wheel-flat passage (258 wheel slices, 26 positions), run with --unvalidated (the default run
+# refuses wheel slices: docs/decisions.md, "Variable wheel profiles").
+EXAMPLE_CONTACT_SECONDS = {"spence35": 2.3, "carter2d": None, "catt_to_cart": 2.6, "tractcurv": 19.0,
+                           "mbench_a22_varfric": 3.2, "wheelflat": 22.3}
+# Extra `rollcontact run` arguments per example input.
+EXAMPLE_FLAGS = {"wheelflat": ["--unvalidated"]}
+# Files an example reads besides its .inp (profiles, slices).
+EXAMPLE_FILES = {"mbench_a22_varfric": ["MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"],
+                 "wheelflat": ["r300_wide.prr", "S1002_flat.slcw", "S1002_flat"]}
 EXAMPLES = HERE.parent.parent / "shared" / "reference" / "contact-examples"
 
 KIND_DIGIT_T = {"normal": 0, "shift": 1, "steady": 3, "steady_forces": 3}
@@ -146,11 +155,11 @@ def parse_timing(stderr):
     return phases
 
 
-def run_once(exe, path, timing):
+def run_once(exe, path, timing, flags=()):
     """One whole process: its wall time from spawning to its exit, as a shell or /usr/bin/time
     sees it (Popen and wait4; /usr/bin/time's %e has 10 ms steps and its own start-up adds about
     a millisecond), its peak resident set (wait4's ru_maxrss) and the `--timing` split."""
-    cmd = [exe, "run", str(path), "-q"]
+    cmd = [exe, "run", str(path), "-q", *flags]
     if timing:
         cmd.append("--timing")
     # FFTW's plans are kept in a cache folder of the run's own (empty at the start): each input's
@@ -187,13 +196,13 @@ def summarise(runs):
             "peak_mb": max(p for _, p, _ in runs), "split": split}
 
 
-def measure(exes, path, repeat, timing):
+def measure(exes, path, repeat, timing, flags=()):
     """Runs each binary `repeat` times on `path`, the binaries alternating run by run (so that a
     load that drifts during the measurement affects them alike); one summary per binary."""
     runs = [[] for _ in exes]
     for _ in range(repeat):
         for k, exe in enumerate(exes):
-            runs[k].append(run_once(exe, path, timing))
+            runs[k].append(run_once(exe, path, timing, flags))
     return [summarise(r) for r in runs]
 
 
@@ -229,7 +238,14 @@ def run_all(args, work):
         for name in EXAMPLE_CONTACT_SECONDS:
             path = work / f"{name}.inp"
             shutil.copy(EXAMPLES / path.name, path)
-            summaries = measure(exes, path, args.repeat, not args.no_timing)
+            for extra in EXAMPLE_FILES.get(name, []):
+                source, target = EXAMPLES / extra, work / extra
+                if source.is_dir() and not target.exists():
+                    shutil.copytree(source, target)
+                elif source.is_file():
+                    shutil.copy(source, target)
+            summaries = measure(exes, path, args.repeat, not args.no_timing,
+                                EXAMPLE_FLAGS.get(name, []))
             cases = len(json.loads(path.with_suffix(".json").read_text())["cases"])
             for k, r in enumerate(summaries):
                 r.update({"kind": "example", "size": name, "grid": f"{cases} cases",

@@ -175,10 +175,11 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
   for (std::size_t j = first; j <= last; ++j) {
     const double pen = -g.gap[j];
     if (!(pen > 0.0)) continue;
-    if (!sliced.empty()) {
-      // A sliced wheel: the integrals over its actual height along x (sliced_weights.hpp).
+    r.min_gap = std::min(r.min_gap, g.gap[j]);
+    if (!sliced.empty() && sliced[j].weight > 0.0) {
+      // A sliced wheel: the integrals over its actual height along x (sliced_weights.hpp). An
+      // interpenetration narrower than their step takes the round wheel's closed form below.
       const SampleMoments& m = sliced[j];
-      if (!(m.weight > 0.0)) continue;
       r.weight += m.weight;
       r.wx += m.weight_x;
       r.wy += m.weight * g.y(j);
@@ -195,7 +196,6 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
       r.x_min = std::min(r.x_min, g.x_locus[j] - t0);
       r.x_max = std::max(r.x_max, g.x_locus[j] + t0);
     }
-    r.min_gap = std::min(r.min_gap, g.gap[j]);
   }
   r.y_min = g.y(first);
   r.y_max = g.y(last);
