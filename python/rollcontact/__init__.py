@@ -26,16 +26,18 @@ __all__ = ["run", "solve", "sweep", "Solver", "hertz_case", "to_toml", "set_valu
            "CreepLookupTable", "Error", "InputError", "__version__"]
 
 
-def run(path, output_dir=None):
+def run(path, output_dir=None, unvalidated=False):
     """Solve every case of a CONTACT .inp or a TOML case file as `rollcontact run` does.
 
     Writes <name>.out and <name>.json next to the input (or into output_dir) and returns one
     dict per case: module-3 cases with their totals and fields, wheel/rail cases (module 1) with
     force_tr, force_ws [N], z_ws [mm] and a list of patches, each a module-3-like dict plus its
     reference point, contact angle and creepages. Cases that could not be solved have
-    solved = False and the reason in error.
+    solved = False and the reason in error. unvalidated=True also solves the wheel/rail
+    features not yet validated against CONTACT (wheel slices, ...), each with a warning, as
+    `rollcontact run --unvalidated` does.
     """
-    return _run_file(str(path), "" if output_dir is None else str(output_dir))
+    return _run_file(str(path), "" if output_dir is None else str(output_dir), bool(unvalidated))
 
 
 class Solver:

@@ -123,3 +123,20 @@ def test_conformal_patch_from_python(tmp_path):
     ax = rc.plot.wheelrail(conformal)  # the curved reference drawn over the profiles
     ax.figure.savefig(tmp_path / "conformal.png", dpi=80)
     assert (tmp_path / "conformal.png").stat().st_size > 5000
+
+
+def test_unvalidated_features_on_request(tmp_path):
+    """mbench_a22_varfric case 3 (patches the D_TURN rule turned): refused by default, solved
+    with a warning with unvalidated=True (`rollcontact run --unvalidated`)."""
+    if not (EXAMPLES / "mbench_a22_varfric.inp").exists():
+        pytest.skip("CONTACT examples not found")
+    for name in ("MBench_UIC60_v3.prr", "MBench_S1002_v3.prw", "mbench_a22_varfric.inp"):
+        shutil.copy(EXAMPLES / name, tmp_path)
+    plain = rc.run(tmp_path / "mbench_a22_varfric.inp", tmp_path / "plain")
+    assert not plain[2]["solved"] and "not supported yet" in plain[2]["error"]
+    assert all(c["solved"] for k, c in enumerate(plain) if k != 2)
+    solved = rc.run(tmp_path / "mbench_a22_varfric.inp", tmp_path / "all", unvalidated=True)
+    case = solved[2]
+    assert case["solved"] and len(case["patches"]) == 2
+    assert any("not validated against CONTACT" in w for w in case["warnings"])
+    assert case["force_tr"][2] == pytest.approx(10000.0, abs=1.0)

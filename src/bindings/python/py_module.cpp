@@ -66,9 +66,11 @@ void attach_profiles(const batch::RunResult& r, py::list& cases) {
 }
 
 /// Runs an input file as `rollcontact run` does (reports next to it or in `output_dir`).
-py::list run_file(const std::filesystem::path& path, const std::filesystem::path& output_dir) {
+py::list run_file(const std::filesystem::path& path, const std::filesystem::path& output_dir,
+                  bool unvalidated) {
   batch::RunOptions options;
   options.output_dir = output_dir;
+  options.solve_unvalidated = unvalidated;
   batch::RunResult r;
   {
     py::gil_scoped_release release;
@@ -166,8 +168,11 @@ PYBIND11_MODULE(_rollcontact, m) {
   py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
   m.def("run_file", &run_file, py::arg("path"), py::arg("output_dir") = std::filesystem::path{},
+        py::arg("unvalidated") = false,
         "Run every case of a CONTACT .inp or TOML file like `rollcontact run`; returns a list of "
-        "dicts, one per case (fields as NumPy arrays of shape (my, mx)).");
+        "dicts, one per case (fields as NumPy arrays of shape (my, mx)). unvalidated: also "
+        "solve the wheel/rail features not yet validated against CONTACT, with a warning each "
+        "(`rollcontact run --unvalidated`).");
   py::class_<Solver>(m, "Solver",
                      "Solves cases given as TOML text, keeping operators and "
                      "sequences between calls.")
