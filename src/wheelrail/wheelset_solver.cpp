@@ -45,10 +45,6 @@ void vary_friction(const model::WheelRailProblem& p, PatchSetup& setup) {
         wheelrail::friction_at(p.friction_variation, a).static_coefficient);
 }
 
-}  // namespace
-
-namespace {
-
 /// A feature whose results are known to differ from CONTACT's: refused when the problem asks
 /// for validated results only, otherwise solved with a warning that says so.
 void unvalidated(const model::WheelRailProblem& p, const std::string& what,
