@@ -74,6 +74,7 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
   Vec3 prev{};
   double prev_yp = 0.0;
   bool have_prev = false;
+  LocusScanSections scan(locus_scan_angles());  // a sliced wheel's scanned cross-sections
   for (std::size_t k = 0; k <= samples; ++k) {
     const double yp = std::min(wheel.y_min() + step * static_cast<double>(k), wheel.y_max());
     const CurvePoint& w = s.wheel_points[k];
@@ -87,7 +88,7 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
     Vec3 pt = pose.wheel_centre + R * q;
     if (prof.wheel_surface() != nullptr) {
       // Out of round: search the circumference from the round wheel's locus angle.
-      const LocusPoint lp = sliced_locus_point(prof, pose, yp, std::atan2(q.x, q.z));
+      const LocusPoint lp = sliced_locus_point(prof, pose, yp, std::atan2(q.x, q.z), &scan);
       if (!lp.found) continue;
       pt = lp.point;
     }

@@ -245,8 +245,38 @@ double SlicedSurface::blended(const std::vector<double>& table, const ThetaBlend
 
 SurfacePoint SlicedSurface::at(double theta_rad, double y) const {
   const ThetaBlend b = blend_at(theta_rad);
+  return evaluate(
+      y, [&](std::size_t k, bool z, double* d) { return blended(z ? tz_ : ty_, b, k, d); });
+}
+
+SurfacePoint SlicedSurface::at(const SurfaceSection& s, double y) const {
+  return evaluate(y, [&](std::size_t k, bool z, double* d) {
+    if (d != nullptr) *d = z ? s.dz_du[k] : s.dy_du[k];
+    return z ? s.z[k] : s.y[k];
+  });
+}
+
+SurfaceSection SlicedSurface::section(double theta_rad) const {
+  const ThetaBlend b = blend_at(theta_rad);
+  SurfaceSection s;
+  s.u = theta_rad;
+  s.y.resize(ctrl_);
+  s.z.resize(ctrl_);
+  s.dy_du.resize(ctrl_);
+  s.dz_du.resize(ctrl_);
+  for (std::size_t k = 0; k < ctrl_; ++k) {
+    s.y[k] = blended(ty_, b, k, &s.dy_du[k]);
+    s.z[k] = blended(tz_, b, k, &s.dz_du[k]);
+  }
+  return s;
+}
+
+template <class Control>
+SurfacePoint SlicedSurface::evaluate(double y, const Control& control) const {
   const auto node_y = [&](std::size_t k) {
-    return (blended(ty_, b, k) + 4.0 * blended(ty_, b, k + 1) + blended(ty_, b, k + 2)) / 6.0;
+    return (control(k, false, nullptr) + 4.0 * control(k + 1, false, nullptr) +
+            control(k + 2, false, nullptr)) /
+           6.0;
   };
   // Segment [lo, lo+1] of resampled points whose y bracket the target (y monotone along s):
   // the first slice's segment, then walked to this θ's (the nodes move little with θ; a
@@ -272,8 +302,8 @@ SurfacePoint SlicedSurface::at(double theta_rad, double y) const {
   }
   std::array<double, 4> cy{}, cz{}, dcy{}, dcz{};
   for (std::size_t a = 0; a < 4; ++a) {
-    cy[a] = blended(ty_, b, lo + a, &dcy[a]);
-    cz[a] = blended(tz_, b, lo + a, &dcz[a]);
+    cy[a] = control(lo + a, false, &dcy[a]);
+    cz[a] = control(lo + a, true, &dcz[a]);
   }
   std::array<double, 4> w{}, dw{};
   double u_lo = 0.0, u_hi = 1.0, u = 0.5, yu = 0.0;

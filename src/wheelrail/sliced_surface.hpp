@@ -37,6 +37,14 @@ struct SurfacePoint {
 
 enum class SurfaceBody { Rail, Wheel };
 
+/// The surface's control values at one u, blended once (SlicedSurface::section): many lateral
+/// positions at the same u then cost no blending (the contact locus scans the same angles for
+/// every lateral position of a wheelset without yaw).
+struct SurfaceSection {
+  double u = 0.0;
+  std::vector<double> y, z, dy_du, dz_du;  ///< control values and their u-derivatives
+};
+
 class SlicedSurface {
  public:
   /// Throws GeometryError naming the slices file when a slice cannot be made a curve or its
@@ -46,6 +54,9 @@ class SlicedSurface {
                 SurfaceBody body = SurfaceBody::Wheel, double roll_rad = 0.0);
 
   SurfacePoint at(double u, double y_mm) const;
+  /// The same at the section's u (bit for bit).
+  SurfacePoint at(const SurfaceSection& section, double y_mm) const;
+  SurfaceSection section(double u) const;
   /// The cross-section at u as profile points in the body's canonical order (a wheel's
   /// descending y, a rail's ascending), one per resampled point: the plain profile the contact
   /// search samples there.
@@ -65,6 +76,9 @@ class SlicedSurface {
   /// Control value k (y or z) of the cross-section at the blend (θ-derivative in d).
   double blended(const std::vector<double>& table, const ThetaBlend& b, std::size_t k,
                  double* d = nullptr) const;
+  /// The point at lateral position y from control values control(k, z?, d) of one u.
+  template <class Control>
+  SurfacePoint evaluate(double y, const Control& control) const;
 
   /// The slices' coordinate as the tables use it: a wheel's angle wrapped into [−π, π).
   double along(double u) const;
