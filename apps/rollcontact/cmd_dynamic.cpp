@@ -32,6 +32,7 @@ struct DynamicOptions {
   double speed_mm_s = 0.0;  ///< 0: the case's VS
   double window_s = 0.0;    ///< 0: the last quarter of the run
   bool quiet = false;
+  bool unvalidated = false;  ///< solve what is not validated against CONTACT (wheel slices, ...)
 };
 
 model::WheelRailProblem wheel_rail_case(const DynamicOptions& o) {
@@ -39,7 +40,7 @@ model::WheelRailProblem wheel_rail_case(const DynamicOptions& o) {
   for (const format::InputCase& c : cases) {
     const auto* w = std::get_if<format::WheelRailRecord>(&c);
     if (w == nullptr || (o.case_number != 0 && w->case_number != o.case_number)) continue;
-    return format::to_wheelrail_problem(*w);
+    return format::to_wheelrail_problem(*w, o.unvalidated);
   }
   throw InputError(o.input, 0,
                    o.case_number != 0
@@ -107,6 +108,7 @@ int run_dynamic(DynamicOptions o) {
       r.solves, r.static_load_N, r.z_ws_static_mm, r.z_ws_contact_mm, r.contact_stiffness_N_per_mm,
       r.contact_frequency_Hz, window, sum.mean, 100.0 * (sum.mean / r.static_load_N - 1.0), sum.min,
       sum.max, sum.dominant_frequency_Hz, o.output);
+  for (const std::string& w : r.warnings) fmt::print(stderr, "rollcontact: warning: {}\n", w);
   if (!r.converged) {
     fmt::print(stderr, "rollcontact: NOT CONVERGED: {}\n", r.message);
     return exit_case_failed;
@@ -165,6 +167,9 @@ CommandRunner add_dynamic_command(CLI::App& app) {
   cmd->add_option("--window-s", o->window_s,
                   "summary window at the end [s] (default: the last quarter)");
   cmd->add_flag("-q,--quiet", o->quiet, "no progress line");
+  cmd->add_flag("--unvalidated", o->unvalidated,
+                "also roll what `rollcontact run` refuses as not yet validated against CONTACT, "
+                "e.g. a wheel with a flat (slices; the wheel turns at VPITCH), with a warning");
   return [o] { return run_dynamic(*o); };
 }
 

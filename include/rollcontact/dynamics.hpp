@@ -91,6 +91,8 @@ struct DynamicRollingResult {
   int steps = 0, solves = 0;
   bool converged = true;
   std::string message;  ///< why not converged
+  /// The static equilibrium's warnings (e.g. "not validated against CONTACT: …").
+  std::vector<std::string> warnings;
 };
 
 /// Called every step with the sample and the fraction done; may be empty.

@@ -91,6 +91,7 @@ DynamicRollingResult run_dynamic_rolling(const model::WheelRailProblem& problem,
   if (!equilibrium.converged)
     throw SolverError("dynamic rolling: the static equilibrium did not converge: " +
                       equilibrium.message);
+  out.warnings = equilibrium.warnings;
   out.z_ws_static_mm = equilibrium.z_ws_mm;
   out.z_ws_contact_mm =
       equilibrium.trace.empty() ? equilibrium.z_ws_mm : equilibrium.trace.front().z_ws_mm;
@@ -106,6 +107,9 @@ DynamicRollingResult run_dynamic_rolling(const model::WheelRailProblem& problem,
     p.motion.z_mm = z_w;
     p.motion.vz_mm_s = v_w;
     p.motion.s_mm = problem.motion.s_mm + s_mm;
+    // The wheel turns as it rolls: what an out-of-round wheel (slices) brings under the axle;
+    // a body of revolution does not notice.
+    p.motion.pitch_rad = problem.motion.pitch_rad + p.motion.vpitch_rad_s * (s_mm / v);
     p.rail_state.dz_mm = problem.rail_state.dz_mm + st.dip.dz_mm(s_mm);
     p.rail_state.vz_mm_s = problem.rail_state.vz_mm_s + v * st.dip.slope(s_mm);
     last = solver.solve(p);

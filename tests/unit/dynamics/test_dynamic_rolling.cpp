@@ -10,6 +10,7 @@
 
 #include "rollcontact/dynamics.hpp"
 #include "rollcontact/errors.hpp"
+#include "rollcontact/model/profile.hpp"
 #include "unit/wheelrail/wheelrail_problems.hpp"
 
 namespace rollcontact::dynamics {
@@ -100,6 +101,43 @@ TEST(DynamicRolling, LongDipIsFollowedQuasiStatically) {
                           vehicle.wheel_mass_kg * 1e-3 * acceleration;
   const double change = expected - vehicle.static_load_N();  // ≈ +730 N
   EXPECT_NEAR(sum / n, expected, 0.05 * std::abs(change));
+}
+
+TEST(DynamicRolling, TheWheelTurnsItsOutOfRoundnessUnderTheAxle) {
+  // An out-of-round wheel (slices every 0.1 rad): its radius 0.2 mm smaller over a cosine dip
+  // 1.2 m of its circumference long, whose bottom reaches the contact after 1 m of rolling. The
+  // wheel turns at VPITCH, so the dip passes the contact as a rail dip of the same depth and
+  // length would (LongDipIsFollowedQuasiStatically; 11 contact periods): at the bottom the
+  // wheelset has sunk by the depth, within the ringing of the contact; before the dip arrives
+  // (the first 40 cm) the wheel is round.
+  model::WheelRailProblem p = crowned_rail_at_speed();
+  const double r = p.wheelset.nominal_radius_mm, depth = 0.2, half = 600.0 / r;
+  const double theta_bottom = -p.motion.pitch_rad + 1000.0 / r;
+  SlicedProfile& slices = p.wheel.slices;
+  slices.file = "out-of-round wheel (test)";
+  slices.u_intpol = 1;
+  for (int i = -31; i <= 31; ++i) {
+    const double th = 0.1 * i, d = std::remainder(th - theta_bottom, 2.0 * M_PI) / half;
+    Profile slice = p.wheel.points;
+    const double dip = std::abs(d) < 1.0 ? depth * std::pow(std::cos(0.5 * M_PI * d), 2) : 0.0;
+    for (double& z : slice.z) z -= dip;
+    slices.u.push_back(th);
+    slices.slices.push_back(slice);
+  }
+  DynamicRollingSettings st;
+  st.time_step_s = 5e-4;
+  st.distance_mm = 1000.0;
+  const DynamicRollingResult res = run_dynamic_rolling(p, SprungWheel{}, st);
+  ASSERT_TRUE(res.converged) << res.message;
+  ASSERT_FALSE(res.warnings.empty());  // solved, and said to be unvalidated
+  EXPECT_NE(res.warnings.front().find("not validated against CONTACT"), std::string::npos);
+  const TimeSample& bottom = res.history.back();
+  EXPECT_NEAR(bottom.z_ws_mm - res.z_ws_static_mm, depth, 0.1 * depth);
+  for (const TimeSample& s : res.history) {
+    if (s.s_mm < 350.0) {
+      EXPECT_NEAR(s.z_ws_mm, res.z_ws_static_mm, 0.01 * depth) << s.s_mm;
+    }
+  }
 }
 
 TEST(DynamicRolling, RejectsMeaninglessSettings) {
