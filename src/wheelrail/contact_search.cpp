@@ -206,6 +206,10 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
   return r;
 }
 
+double drop_at(const GapSamples& s, std::size_t j) {
+  return s.rail_drop.empty() ? 0.0 : s.rail_drop[j];
+}
+
 /// A sliced wheel's weight integrals at every interpenetrating sample (its heights along x
 /// sampled on first use, every DX/2: XCP on `wheelflat` moves by less than 1e-4 mm from DX/8 to
 /// DX).
@@ -217,11 +221,22 @@ std::vector<SampleMoments> sliced_sample_moments(const model::WheelRailProblem& 
   for (std::size_t j = 0; j < g.gap.size(); ++j) {
     if (!(g.gap[j] < 0.0)) continue;
     HeightsAlongX& h = s.heights_along_x[j];
-    if (h.empty())
-      h = wheel_heights_along_x(prof, s.pose_at_zero, g.y(j), g.x_locus[j], s.locus_z[j],
-                                0.5 * p.search.dx_mm);
-    const double drop = s.rail_drop.empty() ? 0.0 : s.rail_drop[j];
-    out[j] = gap_moments_along_x(h, s.rail_z[j] + drop, z_ws, p.search.linear_gap_weights);
+    const double step = 0.5 * p.search.dx_mm, rail = s.rail_z[j] + drop_at(s, j);
+    if (h.empty()) {
+      // Over the round wheel's interpenetration 0.3 mm deeper than now: a flat only lifts the
+      // wheel, and deeper iterates of the vertical-force iteration rarely go further.
+      const double half = std::sqrt((0.3 - g.gap[j]) / rolling_curvature_per_mm(p));
+      h = wheel_heights_along_x(prof, s.pose_at_zero, g.y(j), g.x_locus[j], s.locus_z[j], step,
+                                half);
+    }
+    out[j] = gap_moments_along_x(h, rail, z_ws, p.search.linear_gap_weights);
+    if (reaches_window_end(h, out[j]) &&
+        h.step_mm * static_cast<double>(h.z.size() - 1) < 2.0 * full_window_mm(prof)) {
+      // Deeper than the window allowed for: sample the widest one.
+      h = wheel_heights_along_x(prof, s.pose_at_zero, g.y(j), g.x_locus[j], s.locus_z[j], step,
+                                full_window_mm(prof));
+      out[j] = gap_moments_along_x(h, rail, z_ws, p.search.linear_gap_weights);
+    }
   }
   return out;
 }

@@ -1,5 +1,6 @@
 #include "wheelrail/sliced_weights.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,10 +12,15 @@ constexpr double kWindow_rad = 0.08;  ///< as the sliced locus's search (sliced_
 
 }  // namespace
 
+double full_window_mm(const PlacedProfiles& prof) {
+  return kWindow_rad * prof.wheel_r0_mm();
+}
+
 HeightsAlongX wheel_heights_along_x(const PlacedProfiles& prof, const WheelsetPose& pose, double y,
-                                    double x_centre, double z_start, double step) {
+                                    double x_centre, double z_start, double step,
+                                    double half_window_mm) {
   HeightsAlongX h;
-  const double half = kWindow_rad * prof.wheel_r0_mm();
+  const double half = std::min(half_window_mm, full_window_mm(prof));
   const auto n = static_cast<int>(std::ceil(half / step));
   h.step_mm = step;
   h.x0_mm = x_centre - step * n;
@@ -45,6 +51,12 @@ SampleMoments gap_moments_along_x(const HeightsAlongX& wheel, double rail_z, dou
   }
   if (m.weight == 0.0) m.x_min = m.x_max = 0.0;
   return m;
+}
+
+bool reaches_window_end(const HeightsAlongX& wheel, const SampleMoments& m) {
+  if (!(m.weight > 0.0) || wheel.z.empty()) return false;
+  const double last = wheel.x0_mm + wheel.step_mm * static_cast<double>(wheel.z.size() - 1);
+  return m.x_min <= wheel.x0_mm || m.x_max >= last;
 }
 
 }  // namespace rollcontact::wheelrail

@@ -23,12 +23,17 @@ struct HeightsAlongX {
   bool empty() const noexcept { return z.empty(); }
 };
 
-/// Samples the wheel at track position y over x ∈ x_centre ± 0.08·r0 (the window of the
-/// sliced locus: beyond a flat's half-length) every `step_mm`, starting each vertical line's
-/// search at `z_start` (the locus height there).
+/// Half the widest window the heights are sampled over: 0.08·r0 (that of the sliced locus,
+/// beyond a flat's half-length) [mm].
+double full_window_mm(const PlacedProfiles& profiles);
+
+/// Samples the wheel at track position y over x ∈ x_centre ± half_window_mm (at most
+/// full_window_mm) every `step_mm`, starting each vertical line's search at `z_start` (the locus
+/// height there).
 HeightsAlongX wheel_heights_along_x(const PlacedProfiles& profiles,
                                     const WheelsetPose& pose_at_zero, double y_mm,
-                                    double x_centre_mm, double z_start, double step_mm);
+                                    double x_centre_mm, double z_start, double step_mm,
+                                    double half_window_mm);
 
 /// ∫ w(pen) dx and ∫ w(pen)·x dx with pen = z_wheel + z_ws − z_rail > 0 (w = pen², or pen for
 /// linear weights), and the x-range where pen > 0 [mm]. weight = 0: no interpenetration.
@@ -39,5 +44,8 @@ struct SampleMoments {
 
 SampleMoments gap_moments_along_x(const HeightsAlongX& wheel, double rail_z_mm, double z_ws_mm,
                                   bool linear_weights);
+
+/// True when the interpenetration reaches the first or the last line: the window was too short.
+bool reaches_window_end(const HeightsAlongX& wheel, const SampleMoments& moments);
 
 }  // namespace rollcontact::wheelrail
