@@ -59,5 +59,20 @@ TEST(SlicedWeights, NoInterpenetrationAndMissedLinesWeighNothing) {
   EXPECT_EQ(m.x_max, 0.0);
 }
 
+TEST(SlicedWeights, AnInterpenetrationAtTheWindowsEndAsksForAWiderOne) {
+  // The parabola of ParabolaGivesTheClosedFormAndItsVertex interpenetrates over ±10.2 mm: a
+  // window of ±40 mm holds it, one of ±8 mm is cut at both ends.
+  const double c = 1.0 / (2.0 * 460.0), pen = 0.1;
+  const auto z = [&](double x) { return -c * x * x; };
+  const HeightsAlongX wide = heights(z, 0.5);
+  EXPECT_FALSE(reaches_window_end(wide, gap_moments_along_x(wide, 0.0, pen, false)));
+  HeightsAlongX narrow;
+  narrow.step_mm = 0.5;
+  narrow.x0_mm = -8.0;
+  for (double x = -8.0; x <= 8.0 + 1e-9; x += 0.5) narrow.z.push_back(z(x));
+  EXPECT_TRUE(reaches_window_end(narrow, gap_moments_along_x(narrow, 0.0, pen, false)));
+  EXPECT_FALSE(reaches_window_end(narrow, gap_moments_along_x(narrow, 0.0, 0.01, false)));
+}
+
 }  // namespace
 }  // namespace rollcontact::wheelrail
