@@ -177,26 +177,25 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
     const double pen = -g.gap[j];
     if (!(pen > 0.0)) continue;
     r.min_gap = std::min(r.min_gap, g.gap[j]);
+    // A sliced wheel: the integrals over its actual height along x (sliced_weights.hpp); the
+    // round wheel's closed form about the locus point otherwise, and for an interpenetration
+    // narrower than the integrals' step.
+    SampleMoments m;
     if (!sliced.empty() && sliced[j].weight > 0.0) {
-      // A sliced wheel: the integrals over its actual height along x (sliced_weights.hpp). An
-      // interpenetration narrower than their step takes the round wheel's closed form below.
-      const SampleMoments& m = sliced[j];
-      r.weight += m.weight;
-      r.wx += m.weight_x;
-      r.wy += m.weight * g.y(j);
-      r.wd += m.weight * g.rail_angle[j];
-      r.x_min = std::min(r.x_min, m.x_min);
-      r.x_max = std::max(r.x_max, m.x_max);
+      m = sliced[j];
     } else {
-      const double w = gap_sample_weight(pen, c, linear_weights);
-      r.weight += w;
-      r.wx += w * g.x_locus[j];
-      r.wy += w * g.y(j);
-      r.wd += w * g.rail_angle[j];
       const double t0 = std::sqrt(pen / c);
-      r.x_min = std::min(r.x_min, g.x_locus[j] - t0);
-      r.x_max = std::max(r.x_max, g.x_locus[j] + t0);
+      m.weight = gap_sample_weight(pen, c, linear_weights);
+      m.weight_x = m.weight * g.x_locus[j];
+      m.x_min = g.x_locus[j] - t0;
+      m.x_max = g.x_locus[j] + t0;
     }
+    r.weight += m.weight;
+    r.wx += m.weight_x;
+    r.wy += m.weight * g.y(j);
+    r.wd += m.weight * g.rail_angle[j];
+    r.x_min = std::min(r.x_min, m.x_min);
+    r.x_max = std::max(r.x_max, m.x_max);
   }
   r.y_min = g.y(first);
   r.y_max = g.y(last);
@@ -206,6 +205,7 @@ ContactRegion make_region(const GapFunction& g, const PlacedProfiles& prof, std:
   return r;
 }
 
+/// How much lower a roller's or sliced rail's surface lies under the locus at sample j [mm].
 double drop_at(const GapSamples& s, std::size_t j) {
   return s.rail_drop.empty() ? 0.0 : s.rail_drop[j];
 }
@@ -448,8 +448,7 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
   std::size_t j_min = 0;
   for (std::size_t j = 0; j < n; ++j) {
     if (std::isnan(samples.rail_z[j]) || samples.locus_z[j] <= -kNoWheel) continue;
-    const double drop = samples.rail_drop.empty() ? 0.0 : samples.rail_drop[j];
-    g.gap[j] = samples.rail_z[j] + drop - (samples.locus_z[j] + z_ws);
+    g.gap[j] = samples.rail_z[j] + drop_at(samples, j) - (samples.locus_z[j] + z_ws);
     if (g.gap[j] < res.min_gap_mm) {
       res.min_gap_mm = g.gap[j];
       j_min = j;
