@@ -57,7 +57,8 @@ KrylovResult solve_pcg(const LinearMap& a, const LinearMap& m, const std::vector
 }
 
 KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
-                         std::vector<double>& x, double rtol, int max_it, int restart) {
+                         std::vector<double>& x, double rtol, int max_it, int restart,
+                         const GmresObserver* observer) {
   const std::size_t n = b.size();
   KrylovResult res;
   x.assign(n, 0.0);
@@ -87,6 +88,7 @@ KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vect
       m(v[j], z);
       a(z, w);
       ++res.iterations;
+      if (observer != nullptr && observer->applied) observer->applied(j);
       for (std::size_t i = 0; i <= j; ++i) {  // modified Gram–Schmidt
         h[i][j] = dot(w, v[i]);
         for (std::size_t k = 0; k < n; ++k) w[k] -= h[i][j] * v[i][k];
@@ -123,6 +125,7 @@ KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vect
       for (std::size_t k = 0; k < n; ++k) w[k] += y[i] * v[i][k];
     m(w, z);
     for (std::size_t k = 0; k < n; ++k) x[k] += z[k];
+    if (observer != nullptr && observer->combined) observer->combined(y, j);
     if (res.relative_residual <= rtol) {
       res.converged = true;
       return res;

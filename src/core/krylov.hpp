@@ -26,8 +26,19 @@ KrylovResult solve_pcg(const LinearMap& a, const LinearMap& m, const std::vector
                        std::vector<double>& x, double rtol, int max_it,
                        const StepObserver& on_step = nullptr);
 
+/// Lets a caller of GMRES keep side results of its operator applications, as StepObserver does
+/// for PCG: `applied(j)` runs right after A is applied to the j-th direction z_j = M·v_j of the
+/// current cycle, `combined(y, count)` when the cycle ends with x += Σ_{j<count} y_j·z_j. So a
+/// caller that saved a by-product of A·z_j (e.g. the full-grid product) has that of A·x as the
+/// same combination, without applying A to x. The restart's residual product is not reported.
+struct GmresObserver {
+  std::function<void(std::size_t j)> applied;
+  std::function<void(const std::vector<double>& y, std::size_t count)> combined;
+};
+
 /// Right-preconditioned GMRES(restart) from x = 0 until ‖b − A x‖ ≤ rtol·‖b‖, at most max_it.
 KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vector<double>& b,
-                         std::vector<double>& x, double rtol, int max_it, int restart = 40);
+                         std::vector<double>& x, double rtol, int max_it, int restart = 40,
+                         const GmresObserver* observer = nullptr);
 
 }  // namespace rollcontact::core

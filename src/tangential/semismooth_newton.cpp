@@ -93,13 +93,8 @@ class SemismoothNewton {
         break;
       }
       ++newton;
-      bool have_a_dp = false;
-      products += newton_direction(px, py, dpx, dpy, have_a_dp);
-      // A·δp for the line search (linear in the step length), unless PCG accumulated it.
-      if (!have_a_dp) {
-        sys_.a.apply(dpx, dpy, ax_, ay_);
-        ++products;
-      }
+      // δp and A·δp for the line search (linear in the step length).
+      products += newton_direction(px, py, dpx, dpy);
       double lambda = 1.0, best_lambda = 1.0, best = std::numeric_limits<double>::infinity();
       for (int trial = 0; trial < 6; ++trial, lambda *= 0.5) {
         for (std::size_t i : elements_) {
@@ -163,11 +158,10 @@ class SemismoothNewton {
   }
 
   /// Linearises F at p, solves the Newton system and returns δp; returns the products used.
-  /// With PCG, A·δp on the contact elements is accumulated in (ax_, ay_) from the products the
-  /// iteration makes anyway (A·δ0 + Σ α·A·Q·d), saving one product per Newton step; a_dp_known
-  /// tells the caller.
+  /// A·δp on the contact elements is left in (ax_, ay_), accumulated from the products the
+  /// Krylov iteration makes anyway (A·δ0 + the same combination of A·Q·d as δp of d).
   int newton_direction(const std::vector<double>& px, const std::vector<double>& py,
-                       std::vector<double>& dpx, std::vector<double>& dpy, bool& a_dp_known) {
+                       std::vector<double>& dpx, std::vector<double>& dpy) {
     // Classification and the fixed part δ0 of δp (slip magnitudes, zero-bound elements).
     std::size_t nu = 0;
     std::fill(dpx.begin(), dpx.end(), 0.0);
@@ -253,14 +247,16 @@ class SemismoothNewton {
       }
     };
     const double rtol = 0.1;  // inexact Newton: 0.03 and 0.3 measured no better
+    // (ux_, uy_) still hold A·δ0. A·δp = A·δ0 + A·Q·y is accumulated from the products the
+    // Krylov iteration makes anyway, saving the line search one product per Newton step.
+    for (std::size_t i : elements_) {
+      ax_[i] = ux_[i];
+      ay_[i] = uy_[i];
+    }
     core::KrylovResult kr;
     if (sys_.a.symmetric) {
-      // (ux_, uy_) still hold A·δ0; after each PCG step they hold A·Q·d of the step's direction d
-      // (the preconditioner overwrites them only after the observer has run).
-      for (std::size_t i : elements_) {
-        ax_[i] = ux_[i];
-        ay_[i] = uy_[i];
-      }
+      // After each PCG step (ux_, uy_) hold A·Q·d of the step's direction d (the preconditioner
+      // overwrites them only after the observer has run).
       const core::StepObserver accumulate = [&](double alpha) {
         for (std::size_t i : elements_) {
           ax_[i] += alpha * ux_[i];
@@ -268,10 +264,30 @@ class SemismoothNewton {
         }
       };
       kr = core::solve_pcg(op, prec, rhs, y, rtol, max_krylov, accumulate);
-      a_dp_known = true;
     } else {
-      kr = core::solve_gmres(op, prec, rhs, y, rtol, max_krylov);
-      a_dp_known = false;
+      // GMRES: A·Q·z_j of each direction on the contact elements, combined as the solution is.
+      const std::size_t nc = elements_.size();
+      const core::GmresObserver keep{
+          [&](std::size_t j) {
+            if (basis_products_.size() <= j) basis_products_.resize(j + 1);
+            std::vector<double>& u = basis_products_[j];
+            u.resize(2 * nc);
+            for (std::size_t k = 0; k < nc; ++k) {
+              u[2 * k] = ux_[elements_[k]];
+              u[2 * k + 1] = uy_[elements_[k]];
+            }
+          },
+          [&](const std::vector<double>& coefficients, std::size_t count) {
+            for (std::size_t j = 0; j < count; ++j) {
+              const std::vector<double>& u = basis_products_[j];
+              const double c = coefficients[j];
+              for (std::size_t k = 0; k < nc; ++k) {
+                ax_[elements_[k]] += c * u[2 * k];
+                ay_[elements_[k]] += c * u[2 * k + 1];
+              }
+            }
+          }};
+      kr = core::solve_gmres(op, prec, rhs, y, rtol, max_krylov, gmres_restart, &keep);
     }
     products += kr.iterations;
     // δp = δ0 + Q y.
@@ -310,6 +326,7 @@ class SemismoothNewton {
 
   static constexpr int max_newton = 100;
   static constexpr int max_krylov = 200;
+  static constexpr int gmres_restart = 40;
   // Slip elements whose regularisation D_i exceeds this fraction of tᵀA_ii t are dominated by
   // D_i and get the diagonal; the others behave like adhesion and get the circulant. Measured
   // on the benchmark patch (fine products shift / steady at 71×81, 143×163, 287×323): 1.0 gave
@@ -325,6 +342,8 @@ class SemismoothNewton {
   double d_[4];
   double r_;
   std::vector<double> sx_, sy_, fx_, fy_, ux_, uy_, ax_, ay_;
+  /// GMRES: A·Q·z_j on the contact elements (x, y interleaved) per direction of a cycle.
+  std::vector<std::vector<double>> basis_products_;
 };
 
 }  // namespace
