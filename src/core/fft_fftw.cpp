@@ -21,10 +21,31 @@ namespace rollcontact::core::detail {
 
 namespace {
 
+/// The shape of a one-dimensional batch of transforms (FFTW's advanced interface): what decides
+/// its plan, apart from the arrays.
+struct PlanShape {
+  enum class Kind : char { RealToComplex, ComplexToReal, Complex };
+  Kind kind = Kind::Complex;
+  int n = 0, howmany = 0, istride = 0, idist = 0, ostride = 0, odist = 0, sign = 0;
+  bool in_place = false;
+  unsigned flags = 0;
+  bool operator==(const PlanShape&) const = default;
+};
+
 /// FFTW's planner (plan creation and destruction) is not thread-safe and is process-wide, like
 /// its wisdom; engines are created per State, possibly on several threads (executing plans is
 /// thread-safe). One mutex guards the planner and what this process's planning did.
 struct Planner {
+  /// Plans shared by all engines of the process, by shape: the engines of one grid (the normal
+  /// and tangential operators, their preconditioners) and of grids that share a dimension (the
+  /// row transforms of every grid with MX elements, the contact box) each plan a shape once.
+  /// Wheel/rail sweeps meet a new grid every few cases, and a plan costs tens of µs even from
+  /// wisdom. Engines execute them with the new-array functions on their own fftw_malloc'd
+  /// (equally aligned) arrays, in place exactly where the plan is (FFTW manual §4.6; executing
+  /// one plan from several threads on different arrays is safe, §5.4). Kept for the process;
+  /// beyond kMaxShared shapes engines plan privately.
+  static constexpr std::size_t kMaxShared = 4096;
+  std::vector<std::pair<PlanShape, fftw_plan>> shared;
   std::mutex mutex;
   /// A plan that no wisdom held was searched for (the plan cache writes wisdom back only then).
   bool learnt = false;
@@ -49,6 +70,23 @@ auto plan_wisdom_first(Make make, unsigned flags) {
   if (auto plan = make(flags | FFTW_WISDOM_ONLY)) return plan;
   planner().learnt = true;
   return make(flags);
+}
+
+/// A double-precision plan of `shape`, made by make(flags) on the caller's arrays: the shared one,
+/// else a new one that becomes shared. `owned` is set when the plan is the caller's to destroy
+/// (the shared table is full). Call under planner_mutex().
+template <class Make>
+fftw_plan shared_plan(const PlanShape& shape, Make make, bool& owned) {
+  Planner& state = planner();
+  for (const auto& [key, plan] : state.shared)
+    if (key == shape) {
+      owned = false;
+      return plan;
+    }
+  fftw_plan plan = plan_wisdom_first(make, shape.flags);
+  owned = state.shared.size() >= Planner::kMaxShared;
+  if (plan != nullptr && !owned) state.shared.emplace_back(shape, plan);
+  return plan;
 }
 
 class FftwEngine final : public FftEngine {
@@ -97,16 +135,16 @@ class FftwEngine final : public FftEngine {
     // FFTW's 2-D plans cost more planner time (≈ 0.5 ms each at 142×162) than they save in
     // the one or two full transforms an engine runs (a kernel's symbol).
     const Pruned& p = pruned(rows_in);
-    fftw_execute(p.rows_forward);
+    fftw_execute_dft_r2c(p.rows_forward, real_, spectrum_);
     std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
-    fftw_execute(columns_forward_);
+    fftw_execute_dft(columns_forward_, spectrum_, spectrum_);
   }
   void execute_inverse(int rows_out) override {
     rows_out = std::clamp(rows_out, 0, n_slow());
     if (rows_out == 0) return;
     const Pruned& p = pruned(rows_out);
-    fftw_execute(columns_inverse_);
-    fftw_execute(p.rows_inverse);
+    fftw_execute_dft(columns_inverse_, spectrum_, spectrum_);
+    fftw_execute_dft_c2r(p.rows_inverse, spectrum_, real_);
   }
 
   // Convolution with the slow-index transforms out of place, into a column-major buffer (where the
@@ -209,18 +247,17 @@ class FftwEngine final : public FftEngine {
     const int nf = n_fast(), n = n_slow(), h = nf / 2 + 1;
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
-      convolution_forward_ = plan_wisdom_first(
-          [&](unsigned f) {
+      using Kind = PlanShape::Kind;
+      convolution_forward_ =
+          planned({Kind::Complex, n, h, h, 1, 1, n, FFTW_FORWARD, false, flags_}, [&](unsigned f) {
             return fftw_plan_many_dft(1, &n, h, spectrum_, nullptr, h, 1, columns_, nullptr, 1, n,
                                       FFTW_FORWARD, f);
-          },
-          flags_);
-      convolution_inverse_ = plan_wisdom_first(
-          [&](unsigned f) {
+          });
+      convolution_inverse_ =
+          planned({Kind::Complex, n, h, 1, n, h, 1, FFTW_BACKWARD, false, flags_}, [&](unsigned f) {
             return fftw_plan_many_dft(1, &n, h, columns_, nullptr, 1, n, spectrum_, nullptr, h, 1,
                                       FFTW_BACKWARD, f);
-          },
-          flags_);
+          });
     }
     if (convolution_forward_ == nullptr || convolution_inverse_ == nullptr) {
       throw Error("FFTW could not create a convolution plan");
@@ -231,7 +268,7 @@ class FftwEngine final : public FftEngine {
   /// aligned like columns_ (the convolution plans are executed on it).
   void forward_columns(int rows_in, fftw_complex* out) {
     const Pruned& in = pruned(rows_in);
-    fftw_execute(in.rows_forward);
+    fftw_execute_dft_r2c(in.rows_forward, real_, spectrum_);
     std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
     fftw_execute_dft(convolution_forward_, spectrum_, out);
   }
@@ -240,7 +277,7 @@ class FftwEngine final : public FftEngine {
     // Before the transforms: planning a new row count saves and restores spectrum_ and real_.
     const Pruned& out = pruned(rows_out);
     fftw_execute_dft(convolution_inverse_, in, spectrum_);
-    fftw_execute(out.rows_inverse);
+    fftw_execute_dft_c2r(out.rows_inverse, spectrum_, real_);
   }
 
   void free_channels() noexcept {
@@ -270,33 +307,31 @@ class FftwEngine final : public FftEngine {
     Pruned p{rows, nullptr, nullptr};
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
+      using Kind = PlanShape::Kind;
       if (columns_forward_ == nullptr) {
         // The slow-index transforms of all columns of the half-spectrum, in place.
         const auto columns = [&](int sign) {
-          return plan_wisdom_first(
-              [&](unsigned f) {
-                return fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1, spectrum_,
-                                          nullptr, half, 1, sign, f);
-              },
-              flags_);
+          return planned({Kind::Complex, ns, half, half, 1, half, 1, sign, true, flags_},
+                         [&](unsigned f) {
+                           return fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1,
+                                                     spectrum_, nullptr, half, 1, sign, f);
+                         });
         };
         columns_forward_ = columns(FFTW_FORWARD);
         columns_inverse_ = columns(FFTW_BACKWARD);
       }
-      p.rows_forward = plan_wisdom_first(
-          [&](unsigned f) {
-            return fftw_plan_many_dft_r2c(1, &nf, rows, real_, nullptr, 1, nf, spectrum_, nullptr,
-                                          1, half, f);
-          },
-          flags_);
-      p.rows_inverse = plan_wisdom_first(
-          [&](unsigned f) {
-            return fftw_plan_many_dft_c2r(1, &nf, rows, spectrum_, nullptr, 1, half, real_, nullptr,
-                                          1, nf, f);
-          },
-          flags_);
+      p.rows_forward = planned({Kind::RealToComplex, nf, rows, 1, nf, 1, half, 0, false, flags_},
+                               [&](unsigned f) {
+                                 return fftw_plan_many_dft_r2c(1, &nf, rows, real_, nullptr, 1, nf,
+                                                               spectrum_, nullptr, 1, half, f);
+                               });
+      p.rows_inverse = planned({Kind::ComplexToReal, nf, rows, 1, half, 1, nf, 0, false, flags_},
+                               [&](unsigned f) {
+                                 return fftw_plan_many_dft_c2r(1, &nf, rows, spectrum_, nullptr, 1,
+                                                               half, real_, nullptr, 1, nf, f);
+                               });
     }
-    pruned_.push_back(p);  // before the check, so that release() destroys partial plans
+    pruned_.push_back(p);
     if (columns_forward_ == nullptr || columns_inverse_ == nullptr || p.rows_forward == nullptr ||
         p.rows_inverse == nullptr) {
       throw Error("FFTW could not create a pruned plan");
@@ -304,18 +339,22 @@ class FftwEngine final : public FftEngine {
     return pruned_.back();
   }
 
+  /// The plan of `shape` (shared, or the engine's own when the shared table is full; a failed
+  /// plan is nullptr). Call under planner_mutex().
+  template <class Make>
+  fftw_plan planned(const PlanShape& shape, Make make) {
+    bool owned = false;
+    fftw_plan plan = shared_plan(shape, make, owned);
+    if (plan != nullptr && owned) owned_.push_back(plan);
+    return plan;
+  }
+
   void release() noexcept {
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
-      for (fftw_plan plan :
-           {columns_forward_, columns_inverse_, convolution_forward_, convolution_inverse_}) {
-        if (plan != nullptr) fftw_destroy_plan(plan);
-      }
-      for (const Pruned& p : pruned_) {
-        if (p.rows_forward != nullptr) fftw_destroy_plan(p.rows_forward);
-        if (p.rows_inverse != nullptr) fftw_destroy_plan(p.rows_inverse);
-      }
+      for (fftw_plan plan : owned_) fftw_destroy_plan(plan);
     }
+    owned_.clear();
     pruned_.clear();
     columns_forward_ = columns_inverse_ = nullptr;
     convolution_forward_ = convolution_inverse_ = nullptr;
@@ -338,6 +377,7 @@ class FftwEngine final : public FftEngine {
   fftw_plan convolution_forward_ = nullptr;   // spectrum_ columns → columns_
   fftw_plan convolution_inverse_ = nullptr;   // columns_ → spectrum_ columns
   std::vector<fftw_complex*> channels_fftw_;  // set_channel_count(), column-major like columns_
+  std::vector<fftw_plan> owned_;  // plans not in the shared table (planned()), destroyed here
 };
 
 class FftwSingleCirculant final : public SingleCirculant {
