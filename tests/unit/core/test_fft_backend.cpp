@@ -122,6 +122,37 @@ TEST_P(FftEngineTest, PrunedRowsBehaveAsZeroPadding) {
   }
 }
 
+// Engines of one size share their plans (FFTW: a process-wide table, executed on each engine's
+// own arrays): interleaved transforms of two engines must not see each other's data, and an
+// engine must keep working after another of its size, which made the plans, is gone.
+TEST_P(FftEngineTest, EnginesOfOneSizeKeepTheirOwnData) {
+  const int nf = 24, ns = 20, rows = 9;
+  const std::vector<double> x = random_field(static_cast<std::size_t>(nf * ns), 11u);
+  const std::vector<double> y = random_field(static_cast<std::size_t>(nf * ns), 12u);
+  auto reference = make_fft_engine(GetParam(), nf, ns);
+  std::vector<Complex> x_hat(reference->spectrum_size()), y_hat(reference->spectrum_size());
+  reference->forward(x.data(), x_hat.data());
+  reference->forward(y.data(), y_hat.data());
+  auto first = make_fft_engine(GetParam(), nf, ns);
+  auto second = make_fft_engine(GetParam(), nf, ns);
+  std::copy(x.begin(), x.end(), first->real_data());
+  std::copy(y.begin(), y.end(), second->real_data());
+  first->execute_forward(ns);
+  second->execute_forward(ns);
+  for (std::size_t i = 0; i < x_hat.size(); ++i) {
+    EXPECT_EQ(first->spectrum_data()[i], x_hat[i]);  // the same plan: the same bits
+    EXPECT_EQ(second->spectrum_data()[i], y_hat[i]);
+  }
+  reference.reset();
+  first.reset();
+  second->execute_inverse(rows);  // planned now, after the others are gone
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < nf; ++i) {
+      const std::size_t k = static_cast<std::size_t>(i + nf * j);
+      EXPECT_NEAR(second->real_data()[k] / (nf * ns), y[k], 1e-14);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, FftEngineTest,
                          ::testing::ValuesIn(test_support::available_backends()),
                          test_support::backend_param_name);
