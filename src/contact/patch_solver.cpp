@@ -49,6 +49,7 @@ constexpr double max_contact_box_fraction = 0.5;
 /// zero where the old grid did not reach (physics.md §2 "Sequences").
 struct PreviousFields {
   bool present = false;
+  std::vector<char> covered;  ///< 1 where the previous grid reaches
   Field px, py, pn;
   Field ux, uy;                     ///< displacements (transient Fastsim)
   Field sx, sy;                     ///< slip per δq (T=1: per step)
@@ -70,6 +71,7 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift
   out.uy.assign(n, 0.0);
   out.sx.assign(n, 0.0);
   out.sy.assign(n, 0.0);
+  out.covered.assign(n, 0);
   if (prev == nullptr || prev->pn.empty()) return out;
   out.veloc = prev->kinematics.veloc;
   const bool has_mu = prev->mu.size() == prev->grid.size();
@@ -93,6 +95,7 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift
       if (jx < 0 || jx >= old.mx) continue;
       const std::size_t j = static_cast<std::size_t>(jx + old.mx * jy);
       const std::size_t i = grid.index(ix, iy);
+      out.covered[i] = 1;
       out.px[i] = prev->px[j];
       out.py[i] = prev->py[j];
       out.pn[i] = prev->pn[j];
@@ -114,6 +117,18 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift
   }
   out.present = true;
   return out;
+}
+
+/// SequenceLink::new_step: the start 2·last − before of the tractions and pressures where both
+/// grids reach (pressures not below 0), the last elsewhere. Only the fields a start uses.
+void extrapolate_start(PreviousFields& last, const PreviousFields& before) {
+  if (!last.present || !before.present) return;
+  for (std::size_t i = 0; i < last.px.size(); ++i) {
+    if (!last.covered[i] || !before.covered[i]) continue;
+    last.px[i] = 2.0 * last.px[i] - before.px[i];
+    last.py[i] = 2.0 * last.py[i] - before.py[i];
+    last.pn[i] = std::max(0.0, 2.0 * last.pn[i] - before.pn[i]);
+  }
 }
 
 double rms_change(const Field& a, const Field& b) {
@@ -917,6 +932,13 @@ void CaseSolver::run() {
           : nullptr;
   prev_ = map_previous(prev, grid_, problem_.sequence.origin_x_mm - st_.previous_origin_x,
                        problem_.sequence.origin_y_mm - st_.previous_origin_y);
+  // Steady rolling remembers the previous solution only as a start (transient rolling and
+  // shifts as the previous time step, which must stay what it was).
+  if (problem_.sequence.new_step && prev != nullptr && st_.earlier &&
+      kind == model::TangentialKind::SteadyRolling)
+    extrapolate_start(prev_, map_previous(&*st_.earlier, grid_,
+                                          problem_.sequence.origin_x_mm - st_.earlier_origin_x,
+                                          problem_.sequence.origin_y_mm - st_.earlier_origin_y));
   layer_plastic_ = problem_.bodies.has_layer && problem_.bodies.layer.plastic() && !simplified_;
   if (layer_plastic_) {
     if (kind == model::TangentialKind::TransientRolling &&
@@ -1175,6 +1197,11 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
   }
   // A problem that does not become the previous one leaves the stored state as it was.
   if (problem.sequence.becomes_previous || !st.previous) {
+    if (problem.sequence.new_step && st.previous) {
+      st.earlier = std::move(st.previous);
+      st.earlier_origin_x = st.previous_origin_x;
+      st.earlier_origin_y = st.previous_origin_y;
+    }
     st.previous = sol;
     st.previous_origin_x = problem.sequence.origin_x_mm;
     st.previous_origin_y = problem.sequence.origin_y_mm;

@@ -17,6 +17,10 @@ struct PatchSolver::Impl {
   std::optional<Solution> previous;  ///< last solved case (P=0 continuation, warm starts)
   /// Where the previous solution's grid origin lies in the sequence's frame (SequenceLink).
   double previous_origin_x = 0.0, previous_origin_y = 0.0;
+  /// The last solution of the step before the previous one (SequenceLink::new_step), and its
+  /// grid origin.
+  std::optional<Solution> earlier;
+  double earlier_origin_x = 0.0, earlier_origin_y = 0.0;
 };
 
 }  // namespace rollcontact

@@ -81,6 +81,8 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   describe_markers(p, prof, pose, out);
   const bool transient = wheelrail::on_super_grid(p);
   if (transient && !normal_only) pending.clear();
+  const bool new_step = !normal_only && new_step_pending;
+  if (!normal_only) new_step_pending = false;
   for (std::size_t k = 0; k < search.patches.size(); ++k) {
     const wheelrail::SuperGridBox* before =
         transient && k < previous_contact.size() && previous_contact[k] ? &*previous_contact[k]
@@ -103,6 +105,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
           setup.problem.tangential.kind == model::TangentialKind::SteadyRolling;
       link.normal_from_previous = link.continue_previous;
       link.becomes_previous = !normal_only;
+      link.new_step = new_step;
     }
     if (normal_only) setup.problem.tangential.kind = model::TangentialKind::None;
     // Subsurface stresses of the final patches only (WheelsetSolver::solve), not of every
@@ -273,6 +276,7 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
         "FZ = {:g} N < 1e-9 N: no contact computed (z_ws = 0, zero forces)", problem.motion.fz_N));
     return none;
   }
+  impl_->new_step_pending = true;
   WheelRailSolution result = problem.longitudinal != model::LongitudinalLoading::PitchVelocity
                                  ? impl_->solve_pitch_velocity(problem)
                              : problem.massless_rail.enabled ? impl_->solve_massless_rail(problem)

@@ -125,6 +125,10 @@ struct WheelsetSolver::Impl {
   /// its force [N] (the start of the next with I ≥ 1).
   double last_approach_mm = 0.0, last_fz_N = 0.0;
 
+  /// No full solve of the current case yet: its first starts a new step of the patches'
+  /// sequences (SequenceLink::new_step).
+  bool new_step_pending = false;
+
   /// Wall time of the current case [s] (see WheelRailSolution).
   double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
 };

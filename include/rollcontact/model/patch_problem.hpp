@@ -35,6 +35,13 @@ struct SequenceLink {
   /// solution's fields are mapped onto this grid by the difference of the two origins (with the
   /// element offsets as before); 0, 0 for grids that share their coordinates (module 3).
   double origin_x_mm = 0.0, origin_y_mm = 0.0;
+  /// The first solve of a new step of an evenly stepped sequence (a sweep, the time steps of a
+  /// vehicle simulation): the remembered previous solution is the last of the step before, and
+  /// with steady rolling the iterations start from it and the step's before that extrapolated
+  /// linearly (2·last − before: exact where the tractions grow linearly from step to step, as
+  /// in adhesion when the creepages do). Only a start: the solution does not depend on it
+  /// beyond the tolerance.
+  bool new_step = false;
 };
 
 struct PatchProblem {

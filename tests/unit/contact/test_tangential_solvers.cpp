@@ -129,3 +129,45 @@ TEST(SteadyRollingCoarseStart, GivesTheSameSolutionAsAWarmStart) {
 
 }  // namespace
 }  // namespace rollcontact
+
+namespace rollcontact {
+namespace {
+
+// A sweep in equal steps of the creepages (SequenceLink::new_step): the third step starts from
+// the first two extrapolated (2·last − before), exact for the adhesion area's tractions where
+// they grow linearly. Fewer products than the plain warm start (49 against 58 with 40 % of the
+// contact sliding), the same solution.
+TEST(SteadyRollingSweep, ExtrapolatedStartSavesProductsNotAccuracy) {
+  model::PatchProblem p = test::hertz_problem(0.6, 1.0, 10.0, 82000.0, 0.28, 31, 41, 1.1);
+  p.tangential.kind = test::tangential_kind(3);
+  p.solver.tolerance = 1e-7;
+  p.rolling.velocity_mm_per_s = 10000.0;
+  p.rolling.step_mm = 0.6 * 2.2 / 31;
+  p.sequence.continue_previous = true;
+  p.sequence.normal_from_previous = true;
+  auto step = [&](int k, bool new_step) {
+    model::PatchProblem q = p;
+    q.tangential.creepage.longitudinal = 0.4e-5 * k;  // μp₀/G ≈ 3e-5
+    q.tangential.creepage.lateral = -0.2e-5 * k;
+    q.tangential.creepage.spin_rad_per_mm = 0.3e-5 * k;
+    q.sequence.new_step = new_step;
+    return q;
+  };
+  PatchSolver plain, extrapolating;
+  Solution a, b;
+  for (int k = 1; k <= 3; ++k) {
+    a = plain.solve(step(k, false));
+    b = extrapolating.solve(step(k, true));
+    ASSERT_TRUE(a.solver.converged && b.solver.converged);
+  }
+  EXPECT_LT(b.solver.tangential_iterations, a.solver.tangential_iterations);
+  const double scale = 0.3 * a.totals.fn;
+  EXPECT_NEAR(a.totals.fx, b.totals.fx, 1e-6 * scale);
+  EXPECT_NEAR(a.totals.fy, b.totals.fy, 1e-6 * scale);
+  EXPECT_NEAR(a.totals.mz, b.totals.mz, 1e-6 * scale);
+  EXPECT_EQ(a.statistics.nslip, b.statistics.nslip);
+  EXPECT_GT(a.statistics.nslip, 0);
+}
+
+}  // namespace
+}  // namespace rollcontact
