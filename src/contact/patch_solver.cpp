@@ -119,6 +119,26 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift
   return out;
 }
 
+/// `f` on grid `old` mapped onto `grid` as map_previous() does; 0 where `old` does not reach.
+Field map_field(const Field& f, const Grid& old, const Grid& grid, double shift_x, double shift_y) {
+  Field out(grid.size(), 0.0);
+  if (f.size() != old.size() || std::abs(old.dx - grid.dx) > 1e-6 * grid.dx ||
+      std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
+    return out;
+  const long ox = std::lround((grid.xl + shift_x - old.xl) / grid.dx);
+  const long oy = std::lround((grid.yl + shift_y - old.yl) / grid.dy);
+  for (int iy = 0; iy < grid.my; ++iy) {
+    const long jy = iy + oy;
+    if (jy < 0 || jy >= old.my) continue;
+    for (int ix = 0; ix < grid.mx; ++ix) {
+      const long jx = ix + ox;
+      if (jx >= 0 && jx < old.mx)
+        out[grid.index(ix, iy)] = f[static_cast<std::size_t>(jx + old.mx * jy)];
+    }
+  }
+  return out;
+}
+
 /// SequenceLink::new_step: the start 2·last − before of the tractions and pressures where both
 /// grids reach (pressures not below 0), the last elsewhere. Only the fields a start uses.
 void extrapolate_start(PreviousFields& last, const PreviousFields& before) {
@@ -372,6 +392,8 @@ class CaseSolver {
   Field simplified_ux_, simplified_uy_;
   std::unique_ptr<physics::FrictionLaw> friction_;
   PreviousFields prev_;
+  /// The last solve's pressure on this grid (SequenceLink::normal_from_previous), or empty.
+  Field latest_pn_;
   Field mu_;                    ///< velocity-dependent friction: μ per element of the last solve
   bool layer_plastic_ = false;  ///< M=4 with TAU_C0 > 0
   contact::PlasticHistory plastic_history_;
@@ -406,6 +428,9 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   const Field* initial = nullptr;
   if (!sol_.pn.empty()) {
     initial = &sol_.pn;
+  } else if (problem_.sequence.normal_from_previous && prev_.present &&
+             std::any_of(latest_pn_.begin(), latest_pn_.end(), [](double v) { return v > 0.0; })) {
+    initial = &latest_pn_;
   } else if (problem_.sequence.normal_from_previous && prev_.present &&
              std::any_of(prev_.pn.begin(), prev_.pn.end(), [](double v) { return v > 0.0; })) {
     initial = &prev_.pn;
@@ -939,6 +964,13 @@ void CaseSolver::run() {
     extrapolate_start(prev_, map_previous(&*st_.earlier, grid_,
                                           problem_.sequence.origin_x_mm - st_.earlier_origin_x,
                                           problem_.sequence.origin_y_mm - st_.earlier_origin_y));
+  // A new step starts from the extrapolated previous steps; the iterates of a step from the
+  // last of them, full solve or normal estimate.
+  if (problem_.sequence.normal_from_previous && prev != nullptr && !problem_.sequence.new_step &&
+      !st_.latest_pn.empty())
+    latest_pn_ = map_field(st_.latest_pn, st_.latest_grid, grid_,
+                           problem_.sequence.origin_x_mm - st_.latest_origin_x,
+                           problem_.sequence.origin_y_mm - st_.latest_origin_y);
   layer_plastic_ = problem_.bodies.has_layer && problem_.bodies.layer.plastic() && !simplified_;
   if (layer_plastic_) {
     if (kind == model::TangentialKind::TransientRolling &&
@@ -1195,6 +1227,10 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
     sol.solver.message = "non-finite result (" + non_finite + ")";
     return sol;
   }
+  st.latest_pn = sol.pn;
+  st.latest_grid = sol.grid;
+  st.latest_origin_x = problem.sequence.origin_x_mm;
+  st.latest_origin_y = problem.sequence.origin_y_mm;
   // A problem that does not become the previous one leaves the stored state as it was.
   if (problem.sequence.becomes_previous || !st.previous) {
     if (problem.sequence.new_step && st.previous) {

@@ -21,6 +21,11 @@ struct PatchSolver::Impl {
   /// grid origin.
   std::optional<Solution> earlier;
   double earlier_origin_x = 0.0, earlier_origin_y = 0.0;
+  /// The pressure of the last solve, whether or not it became the previous one (the start of
+  /// the next normal iteration, SequenceLink::normal_from_previous), on its grid and origin.
+  std::vector<double> latest_pn;
+  Grid latest_grid;
+  double latest_origin_x = 0.0, latest_origin_y = 0.0;
 };
 
 }  // namespace rollcontact

@@ -26,9 +26,11 @@ struct SequenceLink {
   /// With prescribed forces: start the creepage iteration from the previous case's creepages
   /// (true) or afresh (false).
   bool force_iteration_from_previous = false;
-  /// With continue_previous: start the normal iteration from the previous pressure (mapped onto
-  /// this grid) instead of the coarse-grid estimate — the start, not the answer. The wheel/rail
-  /// solver sets it for the iterates and cases of one patch position.
+  /// With continue_previous: start the normal iteration from the last solve's pressure (mapped
+  /// onto this grid; also of a solve that did not become the previous one, such as the normal
+  /// estimates of the vertical-force iteration, which lie closest to the next height) instead
+  /// of the coarse-grid estimate — the start, not the answer. The wheel/rail solver sets it for
+  /// the iterates and cases of one patch position.
   bool normal_from_previous = false;
   /// Where this problem's grid coordinates (0, 0) lie in a frame the grids of the sequence share
   /// [mm] (module 1's super grid: x along the track, y the rail arc length). The previous
