@@ -421,6 +421,21 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
       if (h_star[i] < geometry::excluded_distance) h_star[i] += un_t[i];
   }
 
+  // The problem the last normal solve of this sequence had (a full solve at the vertical-force
+  // iteration's last normal estimate): its answer.
+  const auto& last = st_.last_normal;
+  const CombinedMaterial& mat = sol_.material;
+  if (problem_.sequence.normal_from_previous && sol_.pn.empty() && last &&
+      last->force_given == force_given && last->load == load_value && last->g == mat.g &&
+      last->nu == mat.nu && last->k == mat.k && !interaction_ && !mat.viscoelastic() &&
+      !mat.table && last->grid.mx == grid_.mx && last->grid.my == grid_.my &&
+      last->grid.dx == grid_.dx && last->grid.dy == grid_.dy && last->h == h_star) {
+    sol_.pn = last->pn;
+    sol_.totals.pen = last->pen;
+    sol_.solver.normal_residual = 0.0;
+    return;
+  }
+
   // Starting pressure: the current one in an outer loop, else the previous case's when asked
   // for, else the Hertz solution for Hertzian geometries (physics.md §7.1), else the coarse-grid
   // or geometric estimate.
@@ -469,6 +484,12 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     r = solver.solve(h_star, load, load_value, settings, initial, sol_.material.nu,
                      sol_.material.g);
   }
+  if (r.converged && !nonsymmetric && !interaction_ && !sol_.material.table)
+    st_.last_normal = PatchSolver::Impl::NormalAnswer{
+        grid_,           h_star, r.pn, force_given, load_value, sol_.material.g, sol_.material.nu,
+        sol_.material.k, r.pen};
+  else
+    st_.last_normal.reset();
   sol_.pn = std::move(r.pn);
   sol_.totals.pen = r.pen;
   sol_.solver.normal_iterations += r.iterations;

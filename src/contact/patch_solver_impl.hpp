@@ -26,6 +26,17 @@ struct PatchSolver::Impl {
   std::vector<double> latest_pn;
   Grid latest_grid;
   double latest_origin_x = 0.0, latest_origin_y = 0.0;
+  /// The last normal problem NormCG solved to convergence: its gap h* and load, and its answer.
+  /// A full solve at the height of the vertical-force iteration's last normal estimate poses
+  /// the same problem again, bit for bit (SequenceLink::normal_from_previous).
+  struct NormalAnswer {
+    Grid grid;
+    std::vector<double> h, pn;
+    bool force_given = false;
+    double load = 0.0, g = 0.0, nu = 0.0, k = 0.0;
+    double pen = 0.0;
+  };
+  std::optional<NormalAnswer> last_normal;
 };
 
 }  // namespace rollcontact
