@@ -112,7 +112,10 @@ bool ProfileCurve::meet_line(const Line& line, double& t, CurveHint& hint) const
       u -= s_[k + 1] - s_[k];
       ++k;
     }
-    if (std::abs(dt) < 1e-11 && std::abs(du) < 1e-9) {
+    // Converged when the step is below 1e-8 mm: Newton's error after it is then of the order
+    // of the step squared over the radii of curvature (≥ 1 mm), far below the 1e-11 mm the
+    // steps were once required to reach — which took one more evaluation to confirm.
+    if (std::abs(dt) < 1e-8 && std::abs(du) < 1e-8) {
       hint.segment = k;
       hint.t = u;
       return true;
