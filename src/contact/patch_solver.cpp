@@ -397,6 +397,9 @@ class CaseSolver {
   PreviousFields prev_;
   /// The last solve's pressure on this grid (SequenceLink::normal_from_previous), or empty.
   Field latest_pn_;
+  /// A·p_n of the normal answer (NormCG's final product), the displacement compute_totals()
+  /// would compute again for a patch without tangential operators; empty when not known.
+  Field normal_un_;
   Field mu_;                    ///< velocity-dependent friction: μ per element of the last solve
   bool layer_plastic_ = false;  ///< M=4 with TAU_C0 > 0
   contact::PlasticHistory plastic_history_;
@@ -434,6 +437,7 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
       !mat.table && last->grid.mx == grid_.mx && last->grid.my == grid_.my &&
       last->grid.dx == grid_.dx && last->grid.dy == grid_.dy && last->h == h_star) {
     sol_.pn = last->pn;
+    normal_un_ = last->un;
     sol_.totals.pen = last->pen;
     sol_.solver.normal_residual = 0.0;
     return;
@@ -487,12 +491,21 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     r = solver.solve(h_star, load, load_value, settings, initial, sol_.material.nu,
                      sol_.material.g);
   }
-  if (r.converged && !nonsymmetric && !interaction_ && !sol_.material.table)
-    st_.last_normal = PatchSolver::Impl::NormalAnswer{
-        grid_,           h_star, r.pn, force_given, load_value, sol_.material.g, sol_.material.nu,
-        sol_.material.k, r.pen};
-  else
-    st_.last_normal.reset();
+  st_.last_normal.reset();
+  if (r.converged && !nonsymmetric && !interaction_ && !sol_.material.table) {
+    PatchSolver::Impl::NormalAnswer& a = st_.last_normal.emplace();
+    a.grid = grid_;
+    a.h = h_star;
+    a.pn = r.pn;
+    a.un = r.un;
+    a.force_given = force_given;
+    a.load = load_value;
+    a.g = sol_.material.g;
+    a.nu = sol_.material.nu;
+    a.k = sol_.material.k;
+    a.pen = r.pen;
+  }
+  if (!nonsymmetric) normal_un_ = r.un;
   sol_.pn = std::move(r.pn);
   sol_.totals.pen = r.pen;
   sol_.solver.normal_iterations += r.iterations;
@@ -1149,6 +1162,8 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
     const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
     double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};
     tops_->full->apply(in, out);
+  } else if (!prescribed_ && normal_un_.size() == n) {
+    s.un = std::move(normal_un_);  // the same product of the same pressure, made already
   } else if (!prescribed_) {
     NormalOperators& ops = st_.operators.normal(grid_, s.material, interaction_);
     ops.product->apply(s.pn.data(), s.un.data());

@@ -31,7 +31,7 @@ struct PatchSolver::Impl {
   /// the same problem again, bit for bit (SequenceLink::normal_from_previous).
   struct NormalAnswer {
     Grid grid;
-    std::vector<double> h, pn;
+    std::vector<double> h, pn, un;  ///< un = A·pn
     bool force_given = false;
     double load = 0.0, g = 0.0, nu = 0.0, k = 0.0;
     double pen = 0.0;
