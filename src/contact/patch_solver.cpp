@@ -907,7 +907,8 @@ tangential::TangentialResult CaseSolver::solve_on_grid(const tangential::Tangent
   TangentialSettings settings;
   // With prescribed forces the Newton loop stops at |ΔF/(μFN)| ≤ EPS; the tangential solutions
   // it differentiates must be an order more accurate, or their noise stalls it.
-  const double eps = problem_.solver.tolerance;
+  const double eps =
+      std::max(problem_.solver.tolerance, problem_.solver.rough_tangential_tolerance);
   settings.eps =
       problem_.tangential.prescribed == model::TangentialPrescribed::Creepages ? eps : 0.1 * eps;
   settings.max_iterations = problem_.solver.max_inner_iterations;

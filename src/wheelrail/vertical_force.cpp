@@ -150,10 +150,10 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   return res;
 }
 
-VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, double start_mm,
-                                               double first_guess_mm,
-                                               const std::function<HeightSample(double)>& full_at,
-                                               const NormalOnlySolve& normal_at) {
+VerticalForceResult solve_vertical_force_split(
+    const VerticalForceSettings& st, double start_mm, double first_guess_mm,
+    const std::function<HeightSample(double)>& full_at, const NormalOnlySolve& normal_at,
+    const std::function<HeightSample(double)>* rough_first_at) {
   constexpr int kMaxRounds = 6;
   VerticalForceResult res;
   res.trace.push_back({0, start_mm, 0.0, 0.0});
@@ -176,8 +176,8 @@ VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, 
   std::vector<double> fs_ratio, ratio_before;
   double z_full = 0.0, z_before = 0.0;
   HeightSample s;
-  auto full = [&](double zz) {
-    s = full_at(zz);
+  auto full = [&](double zz, bool rough = false) {
+    s = rough ? (*rough_first_at)(zz) : full_at(zz);
     const PowerLaw model(s, k);
     double model_f = 0.0, slope = 0.0;
     if (model.usable()) model.eval(zz, model_f, slope);
@@ -205,14 +205,22 @@ VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& st, 
     }
     return r;
   };
-  full(z);  // the tangential share of F_z is known only from a full solve
+  // The tangential share of F_z is known only from a full solve.
+  full(z, rough_first_at != nullptr);
   if (!std::isfinite(s.fz_N)) {
     res.message = fmt::format("the vertical force is not finite at z_ws = {:g} mm", z);
     return res;
   }
   if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
-    res.converged = true;
-    return res;
+    if (rough_first_at == nullptr) {
+      res.converged = true;
+      return res;
+    }
+    full(z);  // the answer stands only from a solve at the case's tolerance
+    if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
+      res.converged = true;
+      return res;
+    }
   }
   for (int round = 0; round < kMaxRounds; ++round) {
     const VerticalForceResult estimate = solve_vertical_force(

@@ -61,10 +61,12 @@ using NormalOnlySolve = std::function<HeightSample(double z, const std::vector<d
 /// full solve, and a full solve at each converged estimate, which decides. After 6 rounds the
 /// plain iteration on full solves takes over. The last full solve's results stand, as above.
 /// (Tried: the previous case's shares instead of the first full solve; their error of a few
-/// newtons in F_z costs a second round more often than it saves one.)
-VerticalForceResult solve_vertical_force_split(const VerticalForceSettings& settings,
-                                               double start_mm, double first_guess_mm,
-                                               const std::function<HeightSample(double)>& full_at,
-                                               const NormalOnlySolve& normal_at);
+/// newtons in F_z costs a second round more often than it saves one.) `rough_first_at`, if
+/// given, makes the first full solve instead: one whose tangential tractions need only inform
+/// the first round (a looser tolerance); should it meet the target already, full_at repeats it.
+VerticalForceResult solve_vertical_force_split(
+    const VerticalForceSettings& settings, double start_mm, double first_guess_mm,
+    const std::function<HeightSample(double)>& full_at, const NormalOnlySolve& normal_at,
+    const std::function<HeightSample(double)>* rough_first_at = nullptr);
 
 }  // namespace rollcontact::wheelrail

@@ -73,8 +73,9 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   // A conformal patch's F_z per newton of its pressure's normal force that its tangential
   // tractions add (their BAR turning), from the last full solve; NaN for planar patches.
   std::vector<double> tangential_share;
+  bool rough = false;
   auto full_at = [&](double z) {
-    result = solve_at(p, z, first);
+    result = solve_at(p, z, first, false, rough);
     first = false;
     wheelrail::HeightSample h;
     h.z_mm = z;
@@ -114,10 +115,16 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
     }
     return h;
   };
+  const std::function<wheelrail::HeightSample(double)> rough_at = [&](double z) {
+    rough = true;
+    wheelrail::HeightSample h = full_at(z);
+    rough = false;
+    return h;
+  };
   const wheelrail::VerticalForceResult vf =
       p.patch.tangential.kind == model::TangentialKind::None
           ? wheelrail::solve_vertical_force(settings, z0, z1, full_at)
-          : wheelrail::solve_vertical_force_split(settings, z0, z1, full_at, normal_at);
+          : wheelrail::solve_vertical_force_split(settings, z0, z1, full_at, normal_at, &rough_at);
   result.trace = vf.trace;
   if (vf.converged && k <= 0.0) {
     last_approach_mm = vf.z_mm - z0;

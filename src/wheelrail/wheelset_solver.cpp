@@ -58,7 +58,7 @@ void unvalidated(const model::WheelRailProblem& p, const std::string& what,
 }  // namespace
 
 WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& p, double z_ws,
-                                                 bool check_ends, bool normal_only) {
+                                                 bool check_ends, bool normal_only, bool rough) {
   using Clock = std::chrono::steady_clock;
   const auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
@@ -108,6 +108,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
       link.new_step = new_step;
     }
     if (normal_only) setup.problem.tangential.kind = model::TangentialKind::None;
+    if (rough) setup.problem.solver.rough_tangential_tolerance = kRoughTangentialTolerance;
     // Subsurface stresses of the final patches only (WheelsetSolver::solve), not of every
     // iterate of the force iterations: they cost more than the contact problem itself.
     setup.problem.subsurface.clear();

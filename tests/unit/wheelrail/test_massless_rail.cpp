@@ -120,10 +120,12 @@ TEST(MasslessRail, StiffSpringsGiveTheRigidRail) {
     ASSERT_EQ(a.patches.size(), b.patches.size());
     EXPECT_LT(std::abs(b.rail_deflection.dy_mm), 1e-7);
     EXPECT_LT(std::abs(b.rail_deflection.dz_mm), 1e-7);
-    const double scale = std::abs(a.force_tr.z);
-    EXPECT_NEAR(b.force_tr.x, a.force_tr.x, 1e-6 * scale) << "case " << k;
-    EXPECT_NEAR(b.force_tr.y, a.force_tr.y, 1e-6 * scale) << "case " << k;
-    EXPECT_NEAR(b.force_tr.z, a.force_tr.z, 1e-6 * scale) << "case " << k;
+    // Both meet F_z within EPS·FZ (1e-5 of 10 kN) by iterations that take different paths:
+    // they agree to twice that, and the other forces with them.
+    const double scale = std::abs(a.force_tr.z), tolerance = 2.0 * rigid.patch.solver.tolerance;
+    EXPECT_NEAR(b.force_tr.x, a.force_tr.x, tolerance * scale) << "case " << k;
+    EXPECT_NEAR(b.force_tr.y, a.force_tr.y, tolerance * scale) << "case " << k;
+    EXPECT_NEAR(b.force_tr.z, a.force_tr.z, tolerance * scale) << "case " << k;
     // The rail sinks by δz, the wheel with it.
     EXPECT_NEAR(b.z_ws_mm, a.z_ws_mm + b.rail_deflection.dz_mm, 1e-6);
   }
