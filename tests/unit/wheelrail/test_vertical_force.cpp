@@ -91,3 +91,52 @@ TEST(VerticalForce, SteepForceMeetsTheTargetNotJustASmallStep) {
 
 }  // namespace
 }  // namespace rollcontact::wheelrail
+
+namespace rollcontact::wheelrail {
+namespace {
+
+// The first full solve may be rough (its tangential share only informs the first round): the
+// answer still comes from full solves, and a rough solve that meets the target is repeated.
+TEST(VerticalForce, RoughFirstSolveIsNeverTheAnswer) {
+  int rough_solves = 0, full_solves = 0;
+  double last_full_z = -1.0;
+  // The rough solve's share is 2 % off (a looser tangential tolerance).
+  const std::function<HeightSample(double)> rough_at = [&](double z) {
+    ++rough_solves;
+    return sample(z, 1.02 * share(z));
+  };
+  auto full_at = [&](double z) {
+    ++full_solves;
+    last_full_z = z;
+    return sample(z, share(z));
+  };
+  auto normal_at = [&](double z, const std::vector<double>& fs) {
+    return sample(z, fs.empty() ? 0.0 : fs[0]);
+  };
+  VerticalForceSettings st;
+  st.target_N = kTarget;
+  st.tolerance = 1e-5;
+  const VerticalForceResult r =
+      solve_vertical_force_split(st, kZ0, kZ0 + 0.005, full_at, normal_at, &rough_at);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_EQ(rough_solves, 1);
+  EXPECT_GE(full_solves, 1);
+  EXPECT_EQ(r.z_mm, last_full_z);  // the last solve, a full one, stands
+  EXPECT_NEAR(sample(r.z_mm, share(r.z_mm)).fz_N, kTarget, 1e-5 * kTarget);
+
+  // Started at the answer: the rough solve meets the target, and a full solve repeats it.
+  rough_solves = full_solves = 0;
+  const std::function<HeightSample(double)> exact_rough = [&](double z) {
+    ++rough_solves;
+    return sample(z, share(z));
+  };
+  const VerticalForceResult at_answer =
+      solve_vertical_force_split(st, kZ0, r.z_mm, full_at, normal_at, &exact_rough);
+  ASSERT_TRUE(at_answer.converged) << at_answer.message;
+  EXPECT_EQ(rough_solves, 1);
+  EXPECT_EQ(full_solves, 1);
+  EXPECT_EQ(last_full_z, r.z_mm);
+}
+
+}  // namespace
+}  // namespace rollcontact::wheelrail
