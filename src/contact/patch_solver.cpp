@@ -432,6 +432,7 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   const auto& last = st_.last_normal;
   const CombinedMaterial& mat = sol_.material;
   if (problem_.sequence.normal_from_previous && sol_.pn.empty() && last &&
+      last->eps <= std::max(problem_.solver.tolerance, problem_.solver.rough_tolerance) &&
       last->force_given == force_given && last->load == load_value && last->g == mat.g &&
       last->nu == mat.nu && last->k == mat.k && !interaction_ && !mat.viscoelastic() &&
       !mat.table && last->grid.mx == grid_.mx && last->grid.my == grid_.my &&
@@ -466,7 +467,7 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   }
 
   normal::NormalSettings settings;
-  settings.eps = problem_.solver.tolerance;
+  settings.eps = std::max(problem_.solver.tolerance, problem_.solver.rough_tolerance);
   settings.max_iterations = problem_.solver.max_inner_iterations;
   const normal::NormalLoad load =
       force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach;
@@ -504,6 +505,7 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     a.nu = sol_.material.nu;
     a.k = sol_.material.k;
     a.pen = r.pen;
+    a.eps = settings.eps;
   }
   if (!nonsymmetric) normal_un_ = r.un;
   sol_.pn = std::move(r.pn);
@@ -907,8 +909,7 @@ tangential::TangentialResult CaseSolver::solve_on_grid(const tangential::Tangent
   TangentialSettings settings;
   // With prescribed forces the Newton loop stops at |ΔF/(μFN)| ≤ EPS; the tangential solutions
   // it differentiates must be an order more accurate, or their noise stalls it.
-  const double eps =
-      std::max(problem_.solver.tolerance, problem_.solver.rough_tangential_tolerance);
+  const double eps = std::max(problem_.solver.tolerance, problem_.solver.rough_tolerance);
   settings.eps =
       problem_.tangential.prescribed == model::TangentialPrescribed::Creepages ? eps : 0.1 * eps;
   settings.max_iterations = problem_.solver.max_inner_iterations;

@@ -35,6 +35,7 @@ struct PatchSolver::Impl {
     bool force_given = false;
     double load = 0.0, g = 0.0, nu = 0.0, k = 0.0;
     double pen = 0.0;
+    double eps = 0.0;  ///< the tolerance it was solved to
   };
   std::optional<NormalAnswer> last_normal;
 };

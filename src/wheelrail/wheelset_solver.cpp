@@ -108,7 +108,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
       link.new_step = new_step;
     }
     if (normal_only) setup.problem.tangential.kind = model::TangentialKind::None;
-    if (rough) setup.problem.solver.rough_tangential_tolerance = kRoughTangentialTolerance;
+    if (rough) setup.problem.solver.rough_tolerance = kRoughTolerance;
     // Subsurface stresses of the final patches only (WheelsetSolver::solve), not of every
     // iterate of the force iterations: they cost more than the contact problem itself.
     setup.problem.subsurface.clear();

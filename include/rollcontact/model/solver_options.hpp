@@ -20,10 +20,10 @@ enum class InitialSlipVelocity {
 
 struct SolverOptions {
   double tolerance = 1e-5;  ///< relative tolerance of every iteration [-]
-  /// Relative tolerance of the tangential solution when larger than `tolerance` (an iterate
-  /// whose tractions only inform the next step, such as the first full solve of the
+  /// Relative tolerance of the normal and tangential iterations when larger than `tolerance`:
+  /// an iterate whose solution only informs the next step (the first full solve of the
   /// vertical-force iteration); 0: `tolerance`.
-  double rough_tangential_tolerance = 0.0;
+  double rough_tolerance = 0.0;
   int max_inner_iterations = 999;        ///< CG / Gauss–Seidel / Krylov products
   int max_newton_iterations = 30;        ///< force iteration (prescribed tangential forces)
   int max_normal_tangential_passes = 1;  ///< Panagiotopoulos passes (1: Johnson's process)
