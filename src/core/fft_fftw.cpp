@@ -56,7 +56,9 @@ struct Planner {
   bool single_used = false;
 };
 Planner& planner() {
-  static Planner state;
+  // Never destroyed: an engine may be released during static destruction after this would
+  // have been, and the shared plans stay reachable to the end (not leaks).
+  static Planner& state = *new Planner;
   return state;
 }
 std::mutex& planner_mutex() {
