@@ -48,6 +48,21 @@ using Field = std::vector<double>;
 /// that leaves boxes of 0.55–0.7 of the grid); 0.99 measured the same as 0.75.
 constexpr double max_contact_box_fraction = 0.75;
 
+/// Element (ix, iy) of a grid is element (ix + ox, iy + oy) of an older one.
+struct ElementOffset {
+  long ox = 0, oy = 0;
+};
+/// The offset of `grid` in `old`; `shift_x`, `shift_y` [mm]: how far this grid's coordinate
+/// origin lies from the older one's in the sequence's frame. None when the element sizes
+/// differ.
+std::optional<ElementOffset> element_offset(const Grid& old, const Grid& grid, double shift_x,
+                                            double shift_y) {
+  if (std::abs(old.dx - grid.dx) > 1e-6 * grid.dx || std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
+    return std::nullopt;
+  return ElementOffset{std::lround((grid.xl + shift_x - old.xl) / grid.dx),
+                       std::lround((grid.yl + shift_y - old.yl) / grid.dy)};
+}
+
 /// Fields of the previous case mapped onto the current grid (same element size, integer offset);
 /// zero where the old grid did not reach (physics.md §2 "Sequences").
 struct PreviousFields {
@@ -86,10 +101,9 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift
     out.plastic.accumulated.assign(n, 0.0);
   }
   const Grid& old = prev->grid;
-  if (std::abs(old.dx - grid.dx) > 1e-6 * grid.dx || std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
-    return out;
-  const long ox = std::lround((grid.xl + shift_x - old.xl) / grid.dx);
-  const long oy = std::lround((grid.yl + shift_y - old.yl) / grid.dy);
+  const std::optional<ElementOffset> offset = element_offset(old, grid, shift_x, shift_y);
+  if (!offset) return out;
+  const auto [ox, oy] = *offset;
   for (int iy = 0; iy < grid.my; ++iy) {
     const long jy = iy + oy;
     if (jy < 0 || jy >= old.my) continue;
@@ -125,11 +139,9 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift
 /// `f` on grid `old` mapped onto `grid` as map_previous() does; 0 where `old` does not reach.
 Field map_field(const Field& f, const Grid& old, const Grid& grid, double shift_x, double shift_y) {
   Field out(grid.size(), 0.0);
-  if (f.size() != old.size() || std::abs(old.dx - grid.dx) > 1e-6 * grid.dx ||
-      std::abs(old.dy - grid.dy) > 1e-6 * grid.dy)
-    return out;
-  const long ox = std::lround((grid.xl + shift_x - old.xl) / grid.dx);
-  const long oy = std::lround((grid.yl + shift_y - old.yl) / grid.dy);
+  const std::optional<ElementOffset> offset = element_offset(old, grid, shift_x, shift_y);
+  if (f.size() != old.size() || !offset) return out;
+  const auto [ox, oy] = *offset;
   for (int iy = 0; iy < grid.my; ++iy) {
     const long jy = iy + oy;
     if (jy < 0 || jy >= old.my) continue;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/krylov.hpp"
@@ -107,6 +108,43 @@ TEST(Krylov, GmresSolvesANonSymmetricSystemWithAndWithoutRestarts) {
     const KrylovResult r = solve_gmres(a, jacobi, b, x, 1e-10, 2000, restart);
     EXPECT_TRUE(r.converged) << "restart " << restart;
     EXPECT_LT(relative_residual(a, b, x), 1e-9) << "restart " << restart;
+  }
+}
+
+TEST(Krylov, GmresReportsItsDirectionsToTheObserver) {
+  // The steady-rolling line search takes A·x as the combination of the A·z_j GMRES made: keep
+  // each operator result when `applied` runs, combine them with the coefficients `combined`
+  // gives, over restarts too.
+  const std::vector<double> b = rhs(60);
+  for (int restart : {80, 15}) {
+    std::vector<double> last_ax;  // the operator's last result
+    const LinearMap base = convection_diffusion(0.8);
+    const LinearMap a = [&](const std::vector<double>& x, std::vector<double>& y) {
+      base(x, y);
+      last_ax = y;
+    };
+    std::vector<std::vector<double>> kept;
+    std::vector<double> ax(b.size(), 0.0);
+    const auto keep = [&](std::size_t j) {
+      if (kept.size() <= j) kept.resize(j + 1);
+      kept[j] = last_ax;
+    };
+    const auto combine = [&](const std::vector<double>& y, std::size_t count) {
+      for (std::size_t j = 0; j < count; ++j)
+        for (std::size_t i = 0; i < ax.size(); ++i) ax[i] += y[j] * kept[j][i];
+    };
+    const GmresObserver observer{keep, combine};
+    std::vector<double> x;
+    const KrylovResult r = solve_gmres(a, jacobi, b, x, 1e-10, 2000, restart, &observer);
+    ASSERT_TRUE(r.converged) << "restart " << restart;
+    std::vector<double> direct;
+    base(x, direct);
+    double diff = 0.0, size = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      diff = std::max(diff, std::abs(ax[i] - direct[i]));
+      size = std::max(size, std::abs(direct[i]));
+    }
+    EXPECT_LT(diff, 1e-10 * size) << "restart " << restart;
   }
 }
 
