@@ -63,6 +63,20 @@ std::optional<ElementOffset> element_offset(const Grid& old, const Grid& grid, d
                        std::lround((grid.yl + shift_y - old.yl) / grid.dy)};
 }
 
+/// Calls visit(i, j) for every element i of `grid` whose element j = i + offset lies in `old`.
+template <class Visit>
+void for_each_overlap(const Grid& old, const Grid& grid, ElementOffset offset, Visit&& visit) {
+  for (int iy = 0; iy < grid.my; ++iy) {
+    const long jy = iy + offset.oy;
+    if (jy < 0 || jy >= old.my) continue;
+    for (int ix = 0; ix < grid.mx; ++ix) {
+      const long jx = ix + offset.ox;
+      if (jx >= 0 && jx < old.mx)
+        visit(grid.index(ix, iy), static_cast<std::size_t>(jx + old.mx * jy));
+    }
+  }
+}
+
 /// Fields of the previous case mapped onto the current grid (same element size, integer offset);
 /// zero where the old grid did not reach (physics.md §2 "Sequences").
 struct PreviousFields {
@@ -103,35 +117,26 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift
   const Grid& old = prev->grid;
   const std::optional<ElementOffset> offset = element_offset(old, grid, shift_x, shift_y);
   if (!offset) return out;
-  const auto [ox, oy] = *offset;
-  for (int iy = 0; iy < grid.my; ++iy) {
-    const long jy = iy + oy;
-    if (jy < 0 || jy >= old.my) continue;
-    for (int ix = 0; ix < grid.mx; ++ix) {
-      const long jx = ix + ox;
-      if (jx < 0 || jx >= old.mx) continue;
-      const std::size_t j = static_cast<std::size_t>(jx + old.mx * jy);
-      const std::size_t i = grid.index(ix, iy);
-      out.covered[i] = 1;
-      out.px[i] = prev->px[j];
-      out.py[i] = prev->py[j];
-      out.pn[i] = prev->pn[j];
-      if (prev->ux.size() == old.size()) {
-        out.ux[i] = prev->ux[j];
-        out.uy[i] = prev->uy[j];
-      }
-      if (prev->sx.size() == old.size()) {
-        out.sx[i] = prev->sx[j];
-        out.sy[i] = prev->sy[j];
-      }
-      if (has_mu) out.mu[i] = prev->mu[j];
-      if (has_plastic) {
-        out.plastic.x[i] = prev->plastic_x[j];
-        out.plastic.y[i] = prev->plastic_y[j];
-        out.plastic.accumulated[i] = prev->plastic_accumulated[j];
-      }
+  for_each_overlap(old, grid, *offset, [&](std::size_t i, std::size_t j) {
+    out.covered[i] = 1;
+    out.px[i] = prev->px[j];
+    out.py[i] = prev->py[j];
+    out.pn[i] = prev->pn[j];
+    if (prev->ux.size() == old.size()) {
+      out.ux[i] = prev->ux[j];
+      out.uy[i] = prev->uy[j];
     }
-  }
+    if (prev->sx.size() == old.size()) {
+      out.sx[i] = prev->sx[j];
+      out.sy[i] = prev->sy[j];
+    }
+    if (has_mu) out.mu[i] = prev->mu[j];
+    if (has_plastic) {
+      out.plastic.x[i] = prev->plastic_x[j];
+      out.plastic.y[i] = prev->plastic_y[j];
+      out.plastic.accumulated[i] = prev->plastic_accumulated[j];
+    }
+  });
   out.present = true;
   return out;
 }
@@ -141,16 +146,7 @@ Field map_field(const Field& f, const Grid& old, const Grid& grid, double shift_
   Field out(grid.size(), 0.0);
   const std::optional<ElementOffset> offset = element_offset(old, grid, shift_x, shift_y);
   if (f.size() != old.size() || !offset) return out;
-  const auto [ox, oy] = *offset;
-  for (int iy = 0; iy < grid.my; ++iy) {
-    const long jy = iy + oy;
-    if (jy < 0 || jy >= old.my) continue;
-    for (int ix = 0; ix < grid.mx; ++ix) {
-      const long jx = ix + ox;
-      if (jx >= 0 && jx < old.mx)
-        out[grid.index(ix, iy)] = f[static_cast<std::size_t>(jx + old.mx * jy)];
-    }
-  }
+  for_each_overlap(old, grid, *offset, [&](std::size_t i, std::size_t j) { out[i] = f[j]; });
   return out;
 }
 

@@ -138,11 +138,7 @@ namespace {
 // they grow linearly. Fewer products than the plain warm start (49 against 58 with 40 % of the
 // contact sliding), the same solution.
 TEST(SteadyRollingSweep, ExtrapolatedStartSavesProductsNotAccuracy) {
-  model::PatchProblem p = test::hertz_problem(0.6, 1.0, 10.0, 82000.0, 0.28, 31, 41, 1.1);
-  p.tangential.kind = test::tangential_kind(3);
-  p.solver.tolerance = 1e-7;
-  p.rolling.velocity_mm_per_s = 10000.0;
-  p.rolling.step_mm = 0.6 * 2.2 / 31;
+  model::PatchProblem p = spinning_case(3);  // its creepages are replaced step by step
   p.sequence.continue_previous = true;
   p.sequence.normal_from_previous = true;
   auto step = [&](int k, bool new_step) {
