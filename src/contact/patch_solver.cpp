@@ -341,6 +341,9 @@ class CaseSolver {
   void run();
 
  private:
+  /// The sequence's remembered state on this grid: prev_ (the previous solution, extrapolated
+  /// at a new step of steady rolling) and latest_pn_; returns the previous solution or nullptr.
+  const Solution* map_sequence(model::TangentialKind kind);
   void solve_normal(const Field& px, const Field& py);
   void set_prescribed_pressure();
   /// KPEC (kpec) or ANALYN for the prescribed approach on the case's grid.
@@ -985,19 +988,7 @@ ForceIterationInput CaseSolver::force_iteration_input(const Solution* prev) cons
   return in;
 }
 
-void CaseSolver::run() {
-  const std::size_t n = grid_.size();
-  const model::TangentialKind kind = problem_.tangential.kind;
-  const bool tangential = kind != model::TangentialKind::None;
-  const model::TangentialPrescribed prescribed = problem_.tangential.prescribed;
-  const model::Creepages& creepage = problem_.tangential.creepage;
-  prescribed_ = problem_.normal.pressure != model::PressureModel::ExactHalfSpace;
-  simplified_ = problem_.bodies.compliance != model::TangentialCompliance::ExactHalfSpace;
-  // The simplified theory has no normal-tangential coupling.
-  coupled_ = !simplified_ && elastic::is_coupled(sol_.material);
-  friction_ = physics::make_friction_law(problem_.friction);
-  sol_.kinematics = tangential::effective_kinematics(problem_, grid_, &notes_);
-
+const Solution* CaseSolver::map_sequence(model::TangentialKind kind) {
   const Solution* prev =
       problem_.sequence.continue_previous && st_.previous && !st_.previous->pn.empty()
           ? &*st_.previous
@@ -1018,6 +1009,23 @@ void CaseSolver::run() {
     latest_pn_ = map_field(st_.latest_pn, st_.latest_grid, grid_,
                            problem_.sequence.origin_x_mm - st_.latest_origin_x,
                            problem_.sequence.origin_y_mm - st_.latest_origin_y);
+  return prev;
+}
+
+void CaseSolver::run() {
+  const std::size_t n = grid_.size();
+  const model::TangentialKind kind = problem_.tangential.kind;
+  const bool tangential = kind != model::TangentialKind::None;
+  const model::TangentialPrescribed prescribed = problem_.tangential.prescribed;
+  const model::Creepages& creepage = problem_.tangential.creepage;
+  prescribed_ = problem_.normal.pressure != model::PressureModel::ExactHalfSpace;
+  simplified_ = problem_.bodies.compliance != model::TangentialCompliance::ExactHalfSpace;
+  // The simplified theory has no normal-tangential coupling.
+  coupled_ = !simplified_ && elastic::is_coupled(sol_.material);
+  friction_ = physics::make_friction_law(problem_.friction);
+  sol_.kinematics = tangential::effective_kinematics(problem_, grid_, &notes_);
+
+  const Solution* prev = map_sequence(kind);
   layer_plastic_ = problem_.bodies.has_layer && problem_.bodies.layer.plastic() && !simplified_;
   if (layer_plastic_) {
     if (kind == model::TangentialKind::TransientRolling &&
