@@ -136,16 +136,23 @@ class FftwEngine final : public FftEngine {
     // slow-index transforms of all columns. Full transforms (all rows) take the same two steps:
     // FFTW's 2-D plans cost more planner time (≈ 0.5 ms each at 142×162) than they save in
     // the one or two full transforms an engine runs (a kernel's symbol).
+    // The slow-index transforms go out of place into columns_ and are transposed back: the
+    // convolution's plans serve, and FFTW's in-place strided plans cost 150–300 µs of planner
+    // time each (ESTIMATE) for the one or two transforms an engine runs this way (a symbol).
     const Pruned& p = pruned(rows_in);
+    ensure_convolution_plans_keeping_arrays();
     fftw_execute_dft_r2c(p.rows_forward, real_, spectrum_);
     std::fill(spectrum_[0] + 2 * half_row_offset(rows_in), spectrum_[0] + 2 * spectrum_size(), 0.0);
-    fftw_execute_dft(columns_forward_, spectrum_, spectrum_);
+    fftw_execute_dft(convolution_forward_, spectrum_, columns_);
+    transpose(columns_, n_fast() / 2 + 1, n_slow(), spectrum_);
   }
   void execute_inverse(int rows_out) override {
     rows_out = std::clamp(rows_out, 0, n_slow());
     if (rows_out == 0) return;
     const Pruned& p = pruned(rows_out);
-    fftw_execute_dft(columns_inverse_, spectrum_, spectrum_);
+    ensure_convolution_plans_keeping_arrays();
+    transpose(spectrum_, n_slow(), n_fast() / 2 + 1, columns_);
+    fftw_execute_dft(convolution_inverse_, columns_, spectrum_);
     fftw_execute_dft_c2r(p.rows_inverse, spectrum_, real_);
   }
 
@@ -241,6 +248,31 @@ class FftwEngine final : public FftEngine {
     std::vector<double> real_, spectrum_;
   };
 
+  /// `in`, `rows` × `cols` row-major, into `out` as `cols` × `rows` row-major (the half-spectrum
+  /// between the row-major and the column-major layout), in tiles that stay in cache.
+  static void transpose(const fftw_complex* in, int rows, int cols, fftw_complex* out) noexcept {
+    constexpr int tile = 16;
+    const auto at = [](int i, int j, int width) {
+      return static_cast<std::size_t>(i) * static_cast<std::size_t>(width) +
+             static_cast<std::size_t>(j);
+    };
+    for (int i0 = 0; i0 < rows; i0 += tile)
+      for (int j0 = 0; j0 < cols; j0 += tile)
+        for (int i = i0; i < std::min(i0 + tile, rows); ++i)
+          for (int j = j0; j < std::min(j0 + tile, cols); ++j) {
+            out[at(j, i, rows)][0] = in[at(i, j, cols)][0];
+            out[at(j, i, rows)][1] = in[at(i, j, cols)][1];
+          }
+  }
+
+  /// ensure_convolution_plans() where real_ and spectrum_ hold data (planning other than
+  /// FFTW_ESTIMATE may overwrite them).
+  void ensure_convolution_plans_keeping_arrays() {
+    if (columns_ != nullptr) return;
+    const ArraysKept kept(*this);
+    ensure_convolution_plans();
+  }
+
   /// The out-of-place slow-index transforms between spectrum_ and the column-major columns_.
   void ensure_convolution_plans() {
     if (columns_ != nullptr) return;
@@ -305,23 +337,11 @@ class FftwEngine final : public FftEngine {
       if (p.rows == rows) return p;
     }
     const ArraysKept kept(*this);
-    const int nf = n_fast(), ns = n_slow(), half = nf / 2 + 1;
+    const int nf = n_fast(), half = nf / 2 + 1;
     Pruned p{rows, nullptr, nullptr};
     {
       std::lock_guard<std::mutex> lock(planner_mutex());
       using Kind = PlanShape::Kind;
-      if (columns_forward_ == nullptr) {
-        // The slow-index transforms of all columns of the half-spectrum, in place.
-        const auto columns = [&](int sign) {
-          return planned({Kind::Complex, ns, half, half, 1, half, 1, sign, true, flags_},
-                         [&](unsigned f) {
-                           return fftw_plan_many_dft(1, &ns, half, spectrum_, nullptr, half, 1,
-                                                     spectrum_, nullptr, half, 1, sign, f);
-                         });
-        };
-        columns_forward_ = columns(FFTW_FORWARD);
-        columns_inverse_ = columns(FFTW_BACKWARD);
-      }
       p.rows_forward = planned({Kind::RealToComplex, nf, rows, 1, nf, 1, half, 0, false, flags_},
                                [&](unsigned f) {
                                  return fftw_plan_many_dft_r2c(1, &nf, rows, real_, nullptr, 1, nf,
@@ -334,8 +354,7 @@ class FftwEngine final : public FftEngine {
                                });
     }
     pruned_.push_back(p);
-    if (columns_forward_ == nullptr || columns_inverse_ == nullptr || p.rows_forward == nullptr ||
-        p.rows_inverse == nullptr) {
+    if (p.rows_forward == nullptr || p.rows_inverse == nullptr) {
       throw Error("FFTW could not create a pruned plan");
     }
     return pruned_.back();
@@ -358,7 +377,6 @@ class FftwEngine final : public FftEngine {
     }
     owned_.clear();
     pruned_.clear();
-    columns_forward_ = columns_inverse_ = nullptr;
     convolution_forward_ = convolution_inverse_ = nullptr;
     if (real_ != nullptr) fftw_free(real_);
     if (spectrum_ != nullptr) fftw_free(spectrum_);
@@ -372,8 +390,6 @@ class FftwEngine final : public FftEngine {
   unsigned flags_;  // FFTW_ESTIMATE or FFTW_MEASURE
   double* real_ = nullptr;
   fftw_complex* spectrum_ = nullptr;
-  fftw_plan columns_forward_ = nullptr;  // in-place slow-index transforms of the half-spectrum
-  fftw_plan columns_inverse_ = nullptr;
   std::vector<Pruned> pruned_;
   fftw_complex* columns_ = nullptr;           // column-major half-spectrum of execute_convolution()
   fftw_plan convolution_forward_ = nullptr;   // spectrum_ columns → columns_

@@ -72,10 +72,14 @@ std::vector<std::string> sorted_lines(const std::string& text) {
   return lines;
 }
 
-/// Writes `now` to `path` unless it holds the same entries as `before` (what the file held).
+/// Writes `now` to `path` unless it holds the same entries as `before` (what the file held) or
+/// is too long to be read again: a process that planned many sizes (a wheel/rail sweep meets a
+/// new grid every few cases) would otherwise leave a file that no later process reads, and the
+/// small runs that the file served would plan afresh.
 void write_if_changed(const std::filesystem::path& path, const std::string& now,
                       const std::string& before) {
-  if (now.empty() || sorted_lines(now) == sorted_lines(before)) return;
+  if (now.empty() || now.size() > max_wisdom_bytes) return;
+  if (sorted_lines(now) == sorted_lines(before)) return;
   write_text_atomically(path, now);
 }
 

@@ -112,6 +112,7 @@ TEST(FftPlanCache, LargeFilesAreNotReadButReplaced) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                     ("rollcontact-wisdom-large-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
+  fftw_forget_wisdom();  // this process's own wisdom stays short enough to be written
   // Valid wisdom padded beyond 32 kB with blank lines (which FFTW's reader skips).
   char* header = fftw_export_wisdom_to_string();
   const std::string large = std::string(header) + std::string(40 * 1024, '\n');
@@ -123,6 +124,37 @@ TEST(FftPlanCache, LargeFilesAreNotReadButReplaced) {
     spectrum_of(test_support::random_field(30 * 14, 3), 30, 14);
   }
   EXPECT_LT(std::filesystem::file_size(dir / "fftw-wisdom-double.txt"), large.size());
+  std::filesystem::remove_all(dir);
+}
+
+TEST(FftPlanCache, WisdomTooLongToReadAgainIsNotWritten) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("rollcontact-wisdom-long-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  fftw_forget_wisdom();
+  // A file a small run left: one size's plans.
+  {
+    const FftPlanCache wisdom(dir);
+    spectrum_of(test_support::random_field(30 * 14, 3), 30, 14);
+  }
+  std::ifstream in(dir / "fftw-wisdom-double.txt");
+  const std::string small((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_NE(small.find("fftw_codelet"), std::string::npos);
+  fftw_forget_wisdom();
+  {
+    // A run that plans many sizes (as a wheel/rail sweep meets a new grid every few cases).
+    const FftPlanCache wisdom(dir);
+    EXPECT_TRUE(wisdom.imported());
+    for (int nf = 18; nf <= 130; nf += 4)
+      spectrum_of(test_support::random_field(static_cast<std::size_t>(nf) * 22, 5), nf, 22);
+    char* text = fftw_export_wisdom_to_string();
+    EXPECT_GT(std::string(text).size(), 32u * 1024u);  // too long to be read again
+    fftw_free(text);
+  }
+  std::ifstream again(dir / "fftw-wisdom-double.txt");
+  const std::string kept((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(kept, small);  // the small run's file still serves small runs
   std::filesystem::remove_all(dir);
 }
 
