@@ -130,9 +130,15 @@ struct WheelsetSolver::Impl {
   /// The last complete solve had patches whose angles the D_TURN rule turned (validated_only
   /// refuses its result: docs/decisions.md, "Variable friction (V=1, 2) and the D_TURN rule").
   bool last_solve_turned = false;
-  /// The last converged vertical-force iteration: its approach z_ws − z_first-contact [mm] and
-  /// its force [N] (the start of the next with I ≥ 1).
-  double last_approach_mm = 0.0, last_fz_N = 0.0;
+  /// The last two converged vertical-force iterations of consecutive cases, the last at the
+  /// back: approach z_ws − z_first-contact [mm] and force [N] (the next case's start).
+  struct ApproachAtForce {
+    double approach_mm = 0.0, fz_N = 0.0;
+  };
+  std::vector<ApproachAtForce> previous_approaches;
+  void remember_approach(double approach_mm, double fz_N);
+  /// The approach at `fz_N` from previous_approaches (nothing without a usable one).
+  std::optional<double> approach_from_previous_cases(double fz_N) const;
 
   /// No full solve of the current case yet: its first starts a new step of the patches'
   /// sequences (SequenceLink::new_step).

@@ -230,5 +230,48 @@ TEST(WheelsetSolver, PreviousCaseStartsTheVerticalIterationWithIestim) {
   EXPECT_LT(std::abs(b.trace[1].fz_N - 10500.0), 0.1 * std::abs(a.trace[1].fz_N - 10500.0));
 }
 
+TEST(WheelsetSolver, SweepCasesStartFromThePreviousApproaches) {
+  // A sweep with I = 0: each case after the first continues the sequence, and its vertical
+  // iteration starts from the last two cases' approaches extrapolated — the same answer to the
+  // tolerance as a solve from Hertz, from a closer first estimate. KPEC keeps the Hertz start
+  // (its F_z(z) jumps; where the answer brackets a jump the start would decide its side).
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0, 0.05);
+  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 10000.0;
+  p.estimate_from_previous_case = false;
+  WheelsetSolver sweep;
+  WheelRailSolution b;
+  for (int k = 0; k < 3; ++k) {
+    p.first_of_sequence = k == 0;
+    p.motion.y_mm = 0.5 * k;
+    b = sweep.solve(p);
+    ASSERT_TRUE(b.converged) << b.message;
+  }
+  p.first_of_sequence = true;
+  const WheelRailSolution a = WheelsetSolver().solve(p);
+  ASSERT_TRUE(a.converged) << a.message;
+  EXPECT_NEAR(b.force_tr.z, 10000.0, 10000.0 * 1e-5 * 1.01);
+  EXPECT_NEAR(b.z_ws_mm, a.z_ws_mm, 1e-5);
+  ASSERT_GE(a.trace.size(), 2u);
+  ASSERT_GE(b.trace.size(), 2u);
+  EXPECT_LT(std::abs(b.trace[1].fz_N - 10000.0), 0.1 * std::abs(a.trace[1].fz_N - 10000.0));
+
+  p.patch.normal.pressure = model::PressureModel::Kpec;
+  p.patch.tangential.kind = model::TangentialKind::None;
+  WheelsetSolver kpec_sweep;
+  WheelRailSolution c;
+  for (int k = 0; k < 3; ++k) {
+    p.first_of_sequence = k == 0;
+    p.motion.y_mm = 0.5 * k;
+    c = kpec_sweep.solve(p);
+  }
+  p.first_of_sequence = true;
+  const WheelRailSolution d = WheelsetSolver().solve(p);
+  ASSERT_GE(c.trace.size(), 2u);
+  ASSERT_GE(d.trace.size(), 2u);
+  EXPECT_EQ(c.trace[1].z_ws_mm, d.trace[1].z_ws_mm);  // Hertz's estimate in both
+}
+
 }  // namespace
 }  // namespace rollcontact
