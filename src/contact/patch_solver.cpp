@@ -403,6 +403,7 @@ class CaseSolver {
   bool prescribed_ = false;   ///< B=2,3,5,6: normal problem skipped
   bool approximate_ = false;  ///< B=5,6: KPEC or ANALYN pressures (FN is their sum)
   bool simplified_ = false;   ///< M=2,3,5: Fastsim / FaStrip instead of the exact theory
+  bool rough_ = false;        ///< SolverOptions::rough_tolerance applies: an iterate's solve
   Field simplified_ux_, simplified_uy_;
   std::unique_ptr<physics::FrictionLaw> friction_;
   PreviousFields prev_;
@@ -1020,6 +1021,7 @@ void CaseSolver::run() {
   const model::Creepages& creepage = problem_.tangential.creepage;
   prescribed_ = problem_.normal.pressure != model::PressureModel::ExactHalfSpace;
   simplified_ = problem_.bodies.compliance != model::TangentialCompliance::ExactHalfSpace;
+  rough_ = problem_.solver.rough_tolerance > problem_.solver.tolerance;
   // The simplified theory has no normal-tangential coupling.
   coupled_ = !simplified_ && elastic::is_coupled(sol_.material);
   friction_ = physics::make_friction_law(problem_.friction);
@@ -1176,6 +1178,10 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
     if (!prescribed_)
       st_.operators.normal(grid_, s.material, interaction_)
           .product->apply(s.pn.data(), s.un.data());
+  } else if (rough_) {
+    // A rough solve only informs the next step (SolverOptions::rough_tolerance): no
+    // displacements beyond the normal solve's own, no elastic energy.
+    if (normal_un_.size() == n) s.un = std::move(normal_un_);
   } else if (tops_ != nullptr) {
     const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
     double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};
@@ -1225,7 +1231,7 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   t.mz *= area;
   t.contact_area = st.ncon * area;
   // N·mm → J; not defined with prescribed pressures (u_n unknown) or the simplified theory.
-  t.elastic_energy = prescribed_ || simplified_ ? 0.0 : 0.5e-3 * energy * area;
+  t.elastic_energy = prescribed_ || simplified_ || rough_ ? 0.0 : 0.5e-3 * energy * area;
   t.frictional_power = 1e-3 * power * area / s.kinematics.dt;  // N·mm/s → W (T=1: J per step)
 }
 

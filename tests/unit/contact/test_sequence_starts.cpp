@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "rollcontact/solve.hpp"
 #include "support/hertz_problem.hpp"
 
@@ -50,6 +53,31 @@ TEST(SequenceStarts, TheSameNormalProblemIsAnsweredWithoutIterating) {
   EXPECT_LT(warm.solver.normal_products, cold.solver.normal_products);
   EXPECT_NEAR(warm.totals.fn, cold.totals.fn, 1e-9 * cold.totals.fn);
   EXPECT_NEAR(warm.totals.pen, cold.totals.pen, 1e-5 * cold.totals.pen);
+}
+
+TEST(SequenceStarts, ARoughSolveLeavesOutWhatOnlyTheAnswerNeeds) {
+  // SolverOptions::rough_tolerance: an iterate that only informs the next step (the
+  // vertical-force iteration's first full solve) gets its forces to the rough tolerance, but no
+  // tangential displacements and no elastic energy (a product with the full 3×3 operator).
+  PatchSolver tight_solver, rough_solver;
+  const Solution tight = tight_solver.solve(rolling_case());
+  model::PatchProblem p = rolling_case();
+  p.solver.rough_tolerance = 1e-2;
+  const Solution rough = rough_solver.solve(p);
+  ASSERT_TRUE(tight.solver.converged && rough.solver.converged);
+  EXPECT_NEAR(rough.totals.fx, tight.totals.fx, 1e-2 * std::abs(tight.totals.fx));
+  EXPECT_NEAR(rough.totals.fn, tight.totals.fn, 1e-9 * tight.totals.fn);  // FN prescribed
+  EXPECT_GT(tight.totals.elastic_energy, 0.0);
+  EXPECT_EQ(rough.totals.elastic_energy, 0.0);
+  double tight_ux = 0.0, rough_ux = 0.0, rough_un = 0.0;
+  for (std::size_t i = 0; i < tight.ux.size(); ++i) {
+    tight_ux = std::max(tight_ux, std::abs(tight.ux[i]));
+    rough_ux = std::max(rough_ux, std::abs(rough.ux[i]));
+    rough_un = std::max(rough_un, std::abs(rough.un[i]));
+  }
+  EXPECT_GT(tight_ux, 0.0);
+  EXPECT_EQ(rough_ux, 0.0);
+  EXPECT_GT(rough_un, 0.0);  // the normal solve's own product is kept
 }
 
 }  // namespace
