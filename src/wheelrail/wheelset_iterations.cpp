@@ -104,8 +104,10 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   // tractions add (their BAR turning), from the last full solve; NaN for planar patches.
   std::vector<double> tangential_share;
   bool rough = false;
+  // The full solve at a converged normal estimate's height takes that estimate's geometry.
+  GeometryAtHeight geometry;
   auto full_at = [&](double z) {
-    result = solve_at(p, z, first, false, rough);
+    result = solve_at(p, z, first, false, rough, &geometry);
     first = false;
     wheelrail::HeightSample h;
     h.z_mm = z;
@@ -128,7 +130,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   // conformal patch the normal solve's own F_z (its pressure's BAR forces) plus the tangential
   // share, so that the estimate aims where the full solve lands.
   auto normal_at = [&](double z, const std::vector<double>& fs_ratio) {
-    const WheelRailSolution r = solve_at(p, z, false, true);
+    const WheelRailSolution r = solve_at(p, z, false, true, false, &geometry);
     wheelrail::HeightSample h;
     h.z_mm = z;
     for (std::size_t i = 0; i < r.patches.size(); ++i) {

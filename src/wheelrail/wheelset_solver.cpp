@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,7 +59,8 @@ void unvalidated(const model::WheelRailProblem& p, const std::string& what,
 }  // namespace
 
 WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& p, double z_ws,
-                                                 bool check_ends, bool normal_only, bool rough) {
+                                                 bool check_ends, bool normal_only, bool rough,
+                                                 GeometryAtHeight* geometry) {
   using Clock = std::chrono::steady_clock;
   const auto since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
@@ -66,7 +68,16 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   auto start = Clock::now();
   const PlacedProfiles& prof = *profiles;
   const WheelsetPose pose = wheelrail::pose_of(p, prof, z_ws);
-  const SearchResult search = wheelrail::search_contact(p, prof, samples, z_ws);
+  const bool reuse = geometry != nullptr && geometry->valid && geometry->z_ws_mm == z_ws;
+  if (geometry != nullptr && !reuse) {
+    geometry->valid = false;
+    geometry->search = wheelrail::search_contact(p, prof, samples, z_ws);
+    geometry->setups.clear();
+    geometry->setup_notes.clear();
+  }
+  std::optional<SearchResult> own_search;
+  if (geometry == nullptr) own_search = wheelrail::search_contact(p, prof, samples, z_ws);
+  const SearchResult& search = geometry != nullptr ? geometry->search : *own_search;
   if (check_ends && !search.patches.empty() && search.minimum_at_profile_end)
     throw GeometryError(
         "the deepest interpenetration lies at an end of the rail profile: the wheel is misplaced "
@@ -87,8 +98,19 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
     const wheelrail::SuperGridBox* before =
         transient && k < previous_contact.size() && previous_contact[k] ? &*previous_contact[k]
                                                                         : nullptr;
-    PatchSetup setup =
-        wheelrail::setup_patch(p, prof, pose, search.patches[k], out.warnings, before);
+    PatchSetup setup;
+    std::vector<std::string> notes;
+    if (reuse) {
+      setup = geometry->setups[k];
+      notes = geometry->setup_notes[k];
+    } else {
+      setup = wheelrail::setup_patch(p, prof, pose, search.patches[k], notes, before);
+      if (geometry != nullptr) {
+        geometry->setups.push_back(setup);
+        geometry->setup_notes.push_back(notes);
+      }
+    }
+    out.warnings.insert(out.warnings.end(), notes.begin(), notes.end());
     if (p.friction_variation.along != model::FrictionVariation::Along::None)
       vary_friction(p, setup);
     // Steady rolling: the previous solve of this patch position (the last iterate, the last
@@ -137,6 +159,10 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
     moment_tr = moment_tr + Vec3{w.moment_tr.x, w.moment_tr.y, w.moment_tr.z};
     moment_ws = moment_ws + Vec3{w.moment_ws.x, w.moment_ws.y, w.moment_ws.z};
     out.patches.push_back(std::move(w));
+  }
+  if (geometry != nullptr && !reuse) {
+    geometry->valid = true;
+    geometry->z_ws_mm = z_ws;
   }
   out.force_tr = to_public(total_tr);
   out.force_ws = to_public(total_ws);

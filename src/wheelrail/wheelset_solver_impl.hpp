@@ -5,6 +5,7 @@
 // wheelset_results.cpp turns patch solutions into the wheel/rail outputs.
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "rollcontact/wheelrail.hpp"
@@ -77,8 +78,20 @@ struct WheelsetSolver::Impl {
   /// problems alone (an estimate inside the vertical-force iteration); `rough`: the patches
   /// solved to kRoughTolerance (a full solve that only informs the vertical-force iteration's
   /// first round).
+  ///
+  /// `geometry`, if given, keeps the contact search and the patches' set-up of the last height
+  /// it was given for the same problem: within one vertical-force iteration the full solve
+  /// follows the normal estimate at the same height (bit for bit), whose geometry it reuses.
+  struct GeometryAtHeight {
+    bool valid = false;
+    double z_ws_mm = 0.0;
+    SearchResult search;
+    std::vector<PatchSetup> setups;                     ///< as setup_patch() made them
+    std::vector<std::vector<std::string>> setup_notes;  ///< the warnings it gave, per patch
+  };
   WheelRailSolution solve_at(const model::WheelRailProblem& p, double z_ws, bool check_ends,
-                             bool normal_only = false, bool rough = false);
+                             bool normal_only = false, bool rough = false,
+                             GeometryAtHeight* geometry = nullptr);
   /// The relative tolerance of a rough solve. The first full solve lies where the Hertz
   /// estimate put it, 10–30 % off the load, and a second round with the share of a full solve
   /// near the answer follows in almost every case; F_s and F_n to about 1 % change little in
