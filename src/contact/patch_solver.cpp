@@ -1185,7 +1185,7 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   } else if (tops_ != nullptr) {
     const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
     double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};
-    tops_->full->apply(in, out);
+    tops_->full_product().apply(in, out);
   } else if (!prescribed_ && normal_un_.size() == n) {
     s.un = std::move(normal_un_);  // the same product of the same pressure, made already
   } else if (!prescribed_) {

@@ -67,14 +67,26 @@ void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, Kerne
     s.nt = std::make_unique<BlockConvolution>(1, 2, std::vector<const Kernel*>{&s.nt_x, &s.nt_y},
                                               fft.backend, fft.planning, &spectra);
   }
-  const Kernel* xn = coupled ? &s.c_xn : nullptr;
-  const Kernel* yn = coupled ? &s.c_yn : nullptr;
-  const Kernel* nx = coupled ? &s.nt_x : nullptr;
-  const Kernel* ny = coupled ? &s.nt_y : nullptr;
-  s.full = std::make_unique<BlockConvolution>(
-      3, 3, std::vector<const Kernel*>{&s.c_xx, &s.c_xy, xn, &s.c_xy, &s.c_yy, yn, nx, ny, &s.c_nn},
-      fft.backend, fft.planning, &spectra);
 }
+
+}  // namespace
+
+BlockConvolution& TangentialOperatorSet::full_product() {
+  if (!full_) {
+    const bool k = coupled();
+    const Kernel* xn = k ? &c_xn : nullptr;
+    const Kernel* yn = k ? &c_yn : nullptr;
+    const Kernel* nx = k ? &nt_x : nullptr;
+    const Kernel* ny = k ? &nt_y : nullptr;
+    full_ = std::make_unique<BlockConvolution>(
+        3, 3, std::vector<const Kernel*>{&c_xx, &c_xy, xn, &c_xy, &c_yy, yn, nx, ny, &c_nn},
+        fft.backend, fft.planning, &spectra);
+    full_->set_interaction(interaction);
+  }
+  return *full_;
+}
+
+namespace {
 
 /// Steady rolling: A = C − C′ with C′ the coefficients seen from one step downstream.
 void assemble_steady_part(TangentialOperatorSet& s, bool coupled, KernelLibrary* lib) {
@@ -138,10 +150,11 @@ void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
   set.kind = key.kind;
   set.shift_x = key.shift_x;
   set.shift_y = key.shift_y;
+  set.fft = fft;
   const bool coupled = is_coupled(material);
   // The products share their kernels' spectra: for shifts and transient rolling A is C, and
   // the previous displacement of a shift is C again.
-  SpectrumCache spectra;
+  SpectrumCache& spectra = set.spectra;
   assemble_plain(set, coupled, fft, lib, spectra);
   if (set.steady())
     assemble_steady_part(set, coupled, lib);
@@ -155,8 +168,7 @@ void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
         std::make_unique<BlockConvolution>(2, 1, std::vector<const Kernel*>{&set.tn_x, &set.tn_y},
                                            fft.backend, fft.planning, &spectra);
   set.interaction = std::move(interaction);
-  for (BlockConvolution* product :
-       {set.a.get(), set.prev.get(), set.tn.get(), set.nt.get(), set.full.get()})
+  for (BlockConvolution* product : {set.a.get(), set.prev.get(), set.tn.get(), set.nt.get()})
     if (product != nullptr) product->set_interaction(set.interaction);
 }
 

@@ -43,8 +43,15 @@ void assemble_normal(NormalOperatorSet& set, const Grid& grid, const CombinedMat
 ///          or C (shift); not for steady rolling;
 ///  tn    — tangential displacement per step due to p_n (K ≠ 0), with C or C − C′;
 ///  nt    — normal displacement due to (p_x, p_y) with C (K ≠ 0);
-///  full  — plain C (3×3 with the couplings when K ≠ 0) for displacement fields and energy.
+///  full  — plain C (3×3 with the couplings when K ≠ 0) for displacement fields and energy,
+///          made on first use (full_product()): the sets of a contact box and of grids whose
+///          solves only inform an iteration never need it.
 struct TangentialOperatorSet {
+  TangentialOperatorSet() = default;
+  // `spectra` refers to the kernels by address: the set stays where it was assembled.
+  TangentialOperatorSet(const TangentialOperatorSet&) = delete;
+  TangentialOperatorSet& operator=(const TangentialOperatorSet&) = delete;
+
   Grid grid;
   CombinedMaterial material;
   InteractionPtr interaction;  ///< attenuation between parts of the grid (all products), or none
@@ -57,9 +64,16 @@ struct TangentialOperatorSet {
   Kernel tn_x, tn_y, nt_x, nt_y;
   std::unique_ptr<BlockConvolution> tn, nt;
   Kernel c_xx, c_xy, c_yy, c_xn, c_yn, c_nn;
-  std::unique_ptr<BlockConvolution> full;
+  FftChoice fft;          ///< of the products, for full_product()
+  SpectrumCache spectra;  ///< the kernels' spectra the products share
 
   bool steady() const noexcept { return kind == model::TangentialKind::SteadyRolling; }
+  bool coupled() const noexcept { return is_coupled(material); }
+  /// The plain 3×3 C, with the set's interaction.
+  BlockConvolution& full_product();
+
+ private:
+  std::unique_ptr<BlockConvolution> full_;
 };
 /// What a tangential set depends on besides grid and material: the kind of loading (None is
 /// treated as steady rolling, as the solver never asks for it) and the rolling step [mm], zero
