@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace rollcontact::wheelrail {
 
@@ -61,6 +62,72 @@ struct PowerLaw {
 double force_tolerance(const VerticalForceSettings& st) {
   const double scale = st.force_scale_N > 0.0 ? st.force_scale_N : st.target_N;
   return std::max(st.tolerance * scale, 1e-9);
+}
+
+/// F_z of a sample's planar patches from their normal forces: Σ F_n (cos δ + r sin δ).
+double planar_fz(const HeightSample& s, const std::vector<double>& ratio) {
+  double fz = 0.0;
+  for (std::size_t i = 0; i < s.patches.size(); ++i)
+    fz += s.patches[i].fn_N *
+          (std::cos(s.patches[i].delta_rad) + ratio[i] * std::sin(s.patches[i].delta_rad));
+  return fz;
+}
+
+/// The height where a full solve that missed the target lands with its own tangential share,
+/// from the normal estimates of the round that led to it, without solving again: each patch's
+/// F_n(z) is linear through the estimate at the full solve's height and the round's nearest
+/// other one, and F_z = Σ F_n (cos δ + r sin δ) with the full solve's δ and r = F_s/F_n. Only
+/// where the model's own error — F_n's curvature (from the power-law model) over the step and
+/// over the two estimates' distance — stays below a quarter of the force tolerance, and for
+/// planar patches (whose estimates are that sum); nothing otherwise.
+std::optional<double> share_corrected_height(const std::vector<HeightSample>& round,
+                                             const HeightSample& full, double target_N,
+                                             double spring, double f_tol) {
+  const auto at_full = std::find_if(round.begin(), round.end(),
+                                    [&](const HeightSample& h) { return h.z_mm == full.z_mm; });
+  if (at_full == round.end()) return std::nullopt;
+  const HeightSample* other = nullptr;
+  for (const HeightSample& h : round)
+    if (h.z_mm != full.z_mm && h.patches.size() == full.patches.size() &&
+        (other == nullptr || std::abs(h.z_mm - full.z_mm) < std::abs(other->z_mm - full.z_mm)))
+      other = &h;
+  if (other == nullptr || at_full->patches.size() != full.patches.size() || full.patches.empty())
+    return std::nullopt;
+  std::vector<double> ratio, ratio_at_full, ratio_other;
+  for (std::size_t i = 0; i < full.patches.size(); ++i) {
+    const PatchForceSample& f = full.patches[i];
+    if (!(f.fn_N > 0.0)) return std::nullopt;
+    ratio.push_back(f.fs_N / f.fn_N);
+    const auto r = [](const PatchForceSample& p) { return p.fn_N > 0.0 ? p.fs_N / p.fn_N : 0.0; };
+    ratio_at_full.push_back(r(at_full->patches[i]));
+    ratio_other.push_back(r(other->patches[i]));
+  }
+  // Planar patches only: the estimates' F_z is the sum above (a conformal patch's is not).
+  const auto planar = [](const HeightSample& h, const std::vector<double>& r) {
+    return std::abs(planar_fz(h, r) - h.fz_N) <= 1e-9 * std::max(1.0, std::abs(h.fz_N));
+  };
+  if (!planar(*at_full, ratio_at_full) || !planar(*other, ratio_other)) return std::nullopt;
+  const double span = full.z_mm - other->z_mm;
+  double slope = spring;  // dF_z/dz [N/mm]
+  for (std::size_t i = 0; i < full.patches.size(); ++i) {
+    const double dfn = (at_full->patches[i].fn_N - other->patches[i].fn_N) / span;
+    const double d = full.patches[i].delta_rad;
+    slope += dfn * (std::cos(d) + ratio[i] * std::sin(d));
+  }
+  if (!(slope > 0.0) || !std::isfinite(slope)) return std::nullopt;
+  const double step = (target_N - full.fz_N - spring * full.z_mm) / slope;
+  // The curvature of F_z(z) from the power-law model of the full solve.
+  const PowerLaw model(full, spring);
+  if (!model.usable()) return std::nullopt;
+  const double h = std::max(std::abs(step), std::abs(span));
+  double f0 = 0.0, fp = 0.0, fm = 0.0, unused = 0.0;
+  model.eval(full.z_mm, f0, unused);
+  model.eval(full.z_mm + h, fp, unused);
+  model.eval(full.z_mm - h, fm, unused);
+  const double curvature = std::abs(fp - 2.0 * f0 + fm) / (h * h);
+  const double model_error = 0.5 * curvature * (step * step + std::abs(span * step));
+  if (!(model_error < 0.25 * f_tol)) return std::nullopt;
+  return full.z_mm + step;
 }
 
 }  // namespace
@@ -222,9 +289,13 @@ VerticalForceResult solve_vertical_force_split(
       return res;
     }
   }
+  std::vector<HeightSample> round_samples;  // the normal estimates of the current round
   for (int round = 0; round < kMaxRounds; ++round) {
-    const VerticalForceResult estimate = solve_vertical_force(
-        st, start_mm, guess, [&](double zz) { return normal_at(zz, ratios_at(zz)); });
+    round_samples.clear();
+    const VerticalForceResult estimate = solve_vertical_force(st, start_mm, guess, [&](double zz) {
+      round_samples.push_back(normal_at(zz, ratios_at(zz)));
+      return round_samples.back();
+    });
     append(estimate);
     if (!estimate.converged || iteration >= st.max_iterations) break;
     const bool same_height = std::abs(estimate.z_mm - z) < st.tolerance;
@@ -234,6 +305,20 @@ VerticalForceResult solve_vertical_force_split(
     if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
       res.converged = true;
       return res;
+    }
+    // The full solve's own tangential share moved F_z off the target (flange contacts: tens of
+    // newtons): where the round's estimates give F_n(z) precisely enough, the full solve goes
+    // straight to the corrected height instead of estimating again.
+    if (const std::optional<double> corrected =
+            share_corrected_height(round_samples, s, st.target_N, k, f_tol);
+        corrected && iteration < st.max_iterations) {
+      z = *corrected;
+      full(z);
+      if (!std::isfinite(s.fz_N)) break;
+      if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
+        res.converged = true;
+        return res;
+      }
     }
     // The tangential share no longer moves the estimate, but the full solve is still off: only
     // full solves can close the gap (mbench_a22_kpec c2: 60 N at the same z_ws, F_z rising by

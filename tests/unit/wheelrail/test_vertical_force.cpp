@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <string>
 
 #include "wheelrail/vertical_force.hpp"
 
@@ -136,6 +139,45 @@ TEST(VerticalForce, RoughFirstSolveIsNeverTheAnswer) {
   EXPECT_EQ(rough_solves, 1);
   EXPECT_EQ(full_solves, 1);
   EXPECT_EQ(last_full_z, r.z_mm);
+}
+
+}  // namespace
+}  // namespace rollcontact::wheelrail
+
+namespace rollcontact::wheelrail {
+namespace {
+
+// After a full solve whose own tangential share moved F_z off the target (the round's
+// estimates took the rough solve's, 2 % off), the next full solve goes to the height the
+// round's normal estimates give with the new share — no normal estimates in between — and
+// meets the target.
+TEST(VerticalForce, ShareCorrectionNeedsNoFurtherNormalEstimates) {
+  std::string calls;  // 'r' rough, 'n' normal estimate, 'f' full, in order
+  const std::function<HeightSample(double)> rough_at = [&](double z) {
+    calls += 'r';
+    return sample(z, 1.02 * share(z));
+  };
+  auto full_at = [&](double z) {
+    calls += 'f';
+    return sample(z, share(z));
+  };
+  auto normal_at = [&](double z, const std::vector<double>& fs) {
+    calls += 'n';
+    return sample(z, fs.empty() ? 0.0 : fs[0]);
+  };
+  VerticalForceSettings st;
+  st.target_N = kTarget;
+  st.tolerance = 1e-5;
+  const VerticalForceResult r =
+      solve_vertical_force_split(st, kZ0, kZ0 + 0.005, full_at, normal_at, &rough_at);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_NEAR(sample(r.z_mm, share(r.z_mm)).fz_N, kTarget, 1e-5 * kTarget);
+  // rough, the first round's estimates, a full solve that misses by the share's 2 %, and
+  // the corrected full solve that meets the target.
+  ASSERT_GE(calls.size(), 4u) << calls;
+  EXPECT_EQ(calls.front(), 'r') << calls;
+  EXPECT_EQ(calls.substr(calls.size() - 2), "ff") << calls;
+  EXPECT_EQ(std::count(calls.begin(), calls.end(), 'f'), 2) << calls;
 }
 
 }  // namespace
