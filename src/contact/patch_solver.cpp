@@ -444,11 +444,11 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   const auto& last = st_.last_normal;
   const CombinedMaterial& mat = sol_.material;
   if (problem_.sequence.normal_from_previous && sol_.pn.empty() && last &&
-      last->eps <= std::max(problem_.solver.tolerance, problem_.solver.rough_tolerance) &&
-      last->force_given == force_given && last->load == load_value && last->g == mat.g &&
-      last->nu == mat.nu && last->k == mat.k && !interaction_ && !mat.viscoelastic() &&
-      !mat.table && last->grid.mx == grid_.mx && last->grid.my == grid_.my &&
-      last->grid.dx == grid_.dx && last->grid.dy == grid_.dy && last->h == h_star) {
+      last->eps <= problem_.solver.tolerance && last->force_given == force_given &&
+      last->load == load_value && last->g == mat.g && last->nu == mat.nu && last->k == mat.k &&
+      !interaction_ && !mat.viscoelastic() && !mat.table && last->grid.mx == grid_.mx &&
+      last->grid.my == grid_.my && last->grid.dx == grid_.dx && last->grid.dy == grid_.dy &&
+      last->h == h_star) {
     sol_.pn = last->pn;
     normal_un_ = last->un;
     sol_.totals.pen = last->pen;
@@ -479,7 +479,9 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   }
 
   normal::NormalSettings settings;
-  settings.eps = std::max(problem_.solver.tolerance, problem_.solver.rough_tolerance);
+  // At the case's tolerance also in a rough solve: its pressure is a sample of the
+  // vertical-force iteration's normal estimates (wheelrail/vertical_force.hpp).
+  settings.eps = problem_.solver.tolerance;
   settings.max_iterations = problem_.solver.max_inner_iterations;
   const normal::NormalLoad load =
       force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach;

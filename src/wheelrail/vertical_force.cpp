@@ -134,7 +134,8 @@ std::optional<double> share_corrected_height(const std::vector<HeightSample>& ro
 
 VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double start_mm,
                                          double first_guess_mm,
-                                         const std::function<HeightSample(double)>& solve_at) {
+                                         const std::function<HeightSample(double)>& solve_at,
+                                         const HeightSample* known) {
   VerticalForceResult res;
   res.trace.push_back({0, start_mm, 0.0, 0.0});
   double lo = start_mm, hi = std::numeric_limits<double>::infinity();  // F(lo) < FZ < F(hi)
@@ -147,6 +148,14 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   bool have_last = false;  // the previous iterate (for the secant)
   double last_z = 0.0, last_residual = 0.0;
   const double f_tol = force_tolerance(st);
+  if (known != nullptr && std::isfinite(known->fz_N) && known->z_mm > start_mm) {
+    const double residual = known->fz_N + k * known->z_mm - st.target_N;
+    (residual < 0.0 ? lo : hi) = known->z_mm;
+    (residual < 0.0 ? f_lo : f_hi) = residual;
+    have_last = true;
+    last_z = known->z_mm;
+    last_residual = residual;
+  }
   for (int it = 1; it <= std::max(st.max_iterations, 1); ++it) {
     const HeightSample s = solve_at(z);
     const PowerLaw model(s, k);
@@ -292,10 +301,18 @@ VerticalForceResult solve_vertical_force_split(
   std::vector<HeightSample> round_samples;  // the normal estimates of the current round
   for (int round = 0; round < kMaxRounds; ++round) {
     round_samples.clear();
-    const VerticalForceResult estimate = solve_vertical_force(st, start_mm, guess, [&](double zz) {
-      round_samples.push_back(normal_at(zz, ratios_at(zz)));
-      return round_samples.back();
-    });
+    // The full solve the round starts from is a sample of its estimates (the same pressure, and
+    // F_z with its own share) where its patches are planar: the estimates' secant starts there.
+    const bool full_is_estimate =
+        std::abs(planar_fz(s, fs_ratio) - s.fz_N) <= 1e-9 * std::max(1.0, std::abs(s.fz_N));
+    const HeightSample* known = full_is_estimate && st.continuous_force ? &s : nullptr;
+    const VerticalForceResult estimate = solve_vertical_force(
+        st, start_mm, guess,
+        [&](double zz) {
+          round_samples.push_back(normal_at(zz, ratios_at(zz)));
+          return round_samples.back();
+        },
+        known);
     append(estimate);
     if (!estimate.converged || iteration >= st.max_iterations) break;
     const bool same_height = std::abs(estimate.z_mm - z) < st.tolerance;
@@ -310,7 +327,8 @@ VerticalForceResult solve_vertical_force_split(
     // newtons): where the round's estimates give F_n(z) precisely enough, the full solve goes
     // straight to the corrected height instead of estimating again.
     if (const std::optional<double> corrected =
-            share_corrected_height(round_samples, s, st.target_N, k, f_tol);
+            st.continuous_force ? share_corrected_height(round_samples, s, st.target_N, k, f_tol)
+                                : std::nullopt;
         corrected && iteration < st.max_iterations) {
       z = *corrected;
       full(z);

@@ -36,6 +36,11 @@ struct VerticalForceSettings {
   double spring_N_per_mm = 0.0;
   /// > 0: the force tolerance is tolerance·force_scale_N instead of tolerance·target [N].
   double force_scale_N = 0.0;
+  /// F_z(z) is continuous (pressures of the half-space theory). KPEC's and ANALYN's F_z jumps
+  /// where their equivalent ellipse changes, and where the answer is a bracket around a jump
+  /// the path decides its side: solve_vertical_force_split then takes no shortcuts (the full
+  /// solve as the estimates' first sample, the share correction without estimates).
+  bool continuous_force = true;
 };
 
 struct VerticalForceResult {
@@ -48,9 +53,12 @@ struct VerticalForceResult {
 /// `start_mm`: the height where contact starts (iterate 0), `first_guess_mm` the Hertz estimate.
 /// `solve_at(z)` runs the full contact problem and returns the forces; the last call is the one
 /// whose results stand.
+/// `known`, if given, is a sample of the same F_z(z) solved before (not traced again): the
+/// bracket and the secant start from it.
 VerticalForceResult solve_vertical_force(const VerticalForceSettings& settings, double start_mm,
                                          double first_guess_mm,
-                                         const std::function<HeightSample(double)>& solve_at);
+                                         const std::function<HeightSample(double)>& solve_at,
+                                         const HeightSample* known = nullptr);
 
 /// Estimates F_z from normal solves only: `fs_ratio[i]` = F_s/F_n of patch i at the last full
 /// solve (the tangential share of F_z = F_n cos δ + F_s sin δ).

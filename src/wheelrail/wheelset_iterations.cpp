@@ -72,6 +72,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
     pen = 0.01;
   }
   wheelrail::VerticalForceSettings settings = st;
+  settings.continuous_force = p.patch.normal.pressure == model::PressureModel::ExactHalfSpace;
   // Never from loss of contact (release 25.1, wheelrail-advanced.md §6.3): at least 1 µm in.
   double z1 = std::max(z0 + pen / cos_min, z0 + 1e-3);
   // From the previous cases' approaches beyond first contact, each scaled by Hertz's F^(2/3)
@@ -81,10 +82,9 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   // continuous there, so the answer is the same within the tolerance. KPEC's and ANALYN's F_z
   // jumps where their equivalent ellipse changes, and where the answer is a bracket around such
   // a jump the start decides its side (mbench_a22_kpec c2): those keep CONTACT's Hertz start.
-  const bool continuous_force = p.patch.normal.pressure == model::PressureModel::ExactHalfSpace;
   if (const std::optional<double> a = approach_from_previous_cases(st.target_N);
       a && k <= 0.0 &&
-      (p.estimate_from_previous_case || (continuous_force && !p.first_of_sequence)))
+      (p.estimate_from_previous_case || (settings.continuous_force && !p.first_of_sequence)))
     z1 = std::max(z0 + *a, z0 + 1e-3);
   if (k > 0.0) {
     // The massless rail with z_ws prescribed: the Hertz force C·pen^1.5 (C from 10 kN) against

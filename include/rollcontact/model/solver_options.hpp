@@ -20,10 +20,11 @@ enum class InitialSlipVelocity {
 
 struct SolverOptions {
   double tolerance = 1e-5;  ///< relative tolerance of every iteration [-]
-  /// Relative tolerance of the normal and tangential iterations when larger than `tolerance`:
-  /// an iterate whose solution only informs the next step (the first full solve of the
-  /// vertical-force iteration); 0: `tolerance`. Such a solution has no displacements beyond
-  /// the normal solve's u_n and no elastic energy (nothing uses them).
+  /// Relative tolerance of the tangential iterations when larger than `tolerance`: an iterate
+  /// whose solution only informs the next step (the first full solve of the vertical-force
+  /// iteration); 0: `tolerance`. The normal problem keeps `tolerance` (its force is a sample of
+  /// the iteration). Such a solution has no displacements beyond the normal solve's u_n and no
+  /// elastic energy (nothing uses them).
   double rough_tolerance = 0.0;
   int max_inner_iterations = 999;        ///< CG / Gauss–Seidel / Krylov products
   int max_newton_iterations = 30;        ///< force iteration (prescribed tangential forces)

@@ -150,7 +150,7 @@ namespace {
 // After a full solve whose own tangential share moved F_z off the target (the round's
 // estimates took the rough solve's, 2 % off), the next full solve goes to the height the
 // round's normal estimates give with the new share — no normal estimates in between — and
-// meets the target.
+// meets the target. The rough solve is the first sample of the first round's estimates.
 TEST(VerticalForce, ShareCorrectionNeedsNoFurtherNormalEstimates) {
   std::string calls;  // 'r' rough, 'n' normal estimate, 'f' full, in order
   const std::function<HeightSample(double)> rough_at = [&](double z) {
@@ -178,6 +178,18 @@ TEST(VerticalForce, ShareCorrectionNeedsNoFurtherNormalEstimates) {
   EXPECT_EQ(calls.front(), 'r') << calls;
   EXPECT_EQ(calls.substr(calls.size() - 2), "ff") << calls;
   EXPECT_EQ(std::count(calls.begin(), calls.end(), 'f'), 2) << calls;
+  const auto estimates = std::count(calls.begin(), calls.end(), 'n');
+
+  // A force that may jump (KPEC, ANALYN): no shortcuts — the estimates take their own samples
+  // (the rough solve is not the first of them) and every full solve follows a round of them.
+  calls.clear();
+  st.continuous_force = false;
+  const VerticalForceResult plain =
+      solve_vertical_force_split(st, kZ0, kZ0 + 0.005, full_at, normal_at, &rough_at);
+  ASSERT_TRUE(plain.converged) << plain.message;
+  EXPECT_NEAR(sample(plain.z_mm, share(plain.z_mm)).fz_N, kTarget, 1e-5 * kTarget);
+  EXPECT_EQ(calls.find("ff"), std::string::npos) << calls;
+  EXPECT_GT(std::count(calls.begin(), calls.end(), 'n'), estimates) << calls;
 }
 
 }  // namespace
