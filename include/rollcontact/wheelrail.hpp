@@ -103,6 +103,8 @@ struct WheelRailSolution {
   ProfileMarker wheel_marker_tr;        ///< wheel-profile origin in track coordinates
   ProfileMarker wheel_marker_ws;        ///< wheel-profile origin in wheelset coordinates
   double z_ws_mm = 0.0;                 ///< wheelset height used (solved when FZ is prescribed)
+  /// Combined elastic constants of rail and wheel (spec/physics.md §3.1), for the report.
+  CombinedMaterial material;
   double vpitch_rad_s = 0.0;  ///< pitch velocity used (solved when FX_WS is prescribed, F=1)
   /// F=1: the outer iterates on VPITCH (complete N=1 solves), 0 otherwise.
   int pitch_iterations = 0;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "elastic/material.hpp"
 #include "post/subsurface.hpp"
 #include "rollcontact/errors.hpp"
 #include "wheelrail/friction_variation.hpp"
@@ -84,6 +85,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
         "on the rail (check Y_WS, the gauge and the profiles' orientation)");
   WheelRailSolution out;
   out.z_ws_mm = z_ws;
+  out.material = elastic::combine_bodies(p.patch.bodies, std::abs(model::rolling_speed_mm_s(p)));
   if (!normal_only) {
     last_solve_turned = false;
     for (const ContactRegion& r : search.patches) last_solve_turned |= r.angle_turned;

@@ -558,7 +558,8 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
   ps.path = path.string();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    in.fail(line, fmt::format("{} profile file '{}' not found", body, ps.file), ps.file);
+    in.fail(line, fmt::format("{} profile file '{}' not found (looked for {})", body, ps.file,
+                              path.string()));
   }
   const ProfileFormat format = profile_format_of(path);
   if (format == ProfileFormat::Slices && !is_slices_extension(path, is_wheel)) {

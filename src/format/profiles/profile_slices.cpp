@@ -87,8 +87,8 @@ SlicedProfile read_slices_file(const std::filesystem::path& path, const ProfileO
         (name.is_absolute() ? name : folder / name).lexically_normal();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(slice_path, ec)) {
-      in.fail(g.line(1), fmt::format("profile file '{}' of slice {} not found", g.text(1), k + 1),
-              g.text(1));
+      in.fail(g.line(1), fmt::format("profile file '{}' of slice {} not found (looked for {})",
+                                     g.text(1), k + 1, slice_path.string()));
     }
     if (profile_format_of(slice_path) == ProfileFormat::Slices) {
       in.fail(g.line(1), "a slice must be a profile file, not another slices file", g.text(1));

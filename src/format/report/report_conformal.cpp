@@ -26,15 +26,14 @@ void write_conformal_diagnostics(std::ostream& os, const WheelRailPatch& w) {
   if (c.contact_row_first >= 0) {
     const int i0 = c.contact_row_first, i1 = c.contact_row_last;
     const double s0 = c.row0_s_mm + c.ds_mm * (i0 - 0.5), s1 = c.row0_s_mm + c.ds_mm * (i1 + 0.5);
-    line(os, fmt::format(" Actual contact on columns iy = [{:3d},{:3d}] (my={:3d}), sc = [{:7.3f}, "
+    line(os, fmt::format(" Actual contact on columns iy = [{:3d},{:3d}] (my={:3d}), sc = [{:7.3f},"
                          "{:7.3f}]",
                          i0 + 1, i1 + 1, my, s0, s1));
     const double a0 = degrees(c.row_alpha_rad[static_cast<std::size_t>(i0)]);
     const double a1 = degrees(c.row_alpha_rad[static_cast<std::size_t>(i1)]);
-    line(os,
-         fmt::format(" Reference contact angle delttr = {:6.2f} deg, range = [{:7.2f}, {:7.2f}] "
-                     "deg",
-                     degrees(w.contact_angle_rad), std::min(a0, a1), std::max(a0, a1)));
+    line(os, fmt::format(" Reference contact angle delttr = {:6.2f} deg, range = [{:7.2f},{:7.2f}] "
+                         "deg",
+                         degrees(w.contact_angle_rad), std::min(a0, a1), std::max(a0, a1)));
   } else {
     line(os, fmt::format(" No contact on the {} rows of the curved reference", my));
   }

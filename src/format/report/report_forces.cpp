@@ -88,7 +88,8 @@ void write_sensitivities(std::ostream& os, const CaseRecord& problem, const Solu
   }
 }
 
-void write_statistics(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
+void write_statistics(std::ostream& os, const CaseRecord& problem, const Solution& solution,
+                      bool leading_blank) {
   const auto& s = solution.statistics;
   const bool plast = uses_plasticity(problem);
   line(os, "");
@@ -97,8 +98,8 @@ void write_statistics(std::ostream& os, const CaseRecord& problem, const Solutio
   line(os, " POT: POTENTIAL CONTACT AREA,  CON: CONTACT,  ADH: ADHESION");
   line(os,
        std::string("    NPOT   NCON   NADH  NSLIP") + (plast ? "  NPLAST" : " ") + " INORM  ITANG");
-  std::string v = " " + fortran_i(s.npot, 7) + fortran_i(s.ncon, 7) + fortran_i(s.nadh, 7) +
-                  fortran_i(s.nslip, 7);
+  std::string v = std::string(leading_blank ? " " : "") + fortran_i(s.npot, 7) +
+                  fortran_i(s.ncon, 7) + fortran_i(s.nadh, 7) + fortran_i(s.nslip, 7);
   if (plast) v += fortran_i(s.nplast, 7);
   v += fortran_i(s.inorm, 7) + fortran_i(s.itang, 7);
   line(os, v);

@@ -1,6 +1,7 @@
 #pragma once
 // Pieces of the .out report shared between report_*.cpp files (not part of the public API).
 
+#include <array>
 #include <iosfwd>
 #include <string>
 #include <string_view>
@@ -19,13 +20,22 @@ std::string a12(std::string_view label);
 /// The reports' usual real field: 12 wide, 4 significant digits (fmt_sig(12, 4, 4, v)).
 std::string sig(double v);
 
+/// ` JOHNSON"S METHOD …` (MAXOUT ≤ 1) or ` PANAGIOTOPOULOS" METHOD … MAXOUT=  n`.
+std::string frictional_stress_method(int maxout);
+
+/// The friction law's column header after `prefix`, and one set of its values (g12.4 fields).
+std::string friction_header(int law, const std::string& prefix);
+std::string friction_values(int law, double fstat, double fkin, const std::array<double, 4>& p);
+
 /// Module-3 parameter blocks printed for O >= 2 (digit echo up to kinematic constants).
 void write_parameter_blocks(std::ostream& os, const CaseRecord& problem, const Solution& solution);
 
 /// Force block (O >= 1), sensitivities and statistics (O >= 2), §3.3–3.4.
 void write_force_block(std::ostream& os, const CaseRecord& problem, const Solution& solution);
 void write_sensitivities(std::ostream& os, const CaseRecord& problem, const Solution& solution);
-void write_statistics(std::ostream& os, const CaseRecord& problem, const Solution& solution);
+/// Module 3 writes the counts as 1x,7i7; module 1's patches as 7i7 (`leading_blank` false).
+void write_statistics(std::ostream& os, const CaseRecord& problem, const Solution& solution,
+                      bool leading_blank = true);
 
 /// The O = 5 table of quantities per contact element, §3.6.
 void write_element_table(std::ostream& os, const CaseRecord& problem, const Solution& solution);

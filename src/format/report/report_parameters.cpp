@@ -69,12 +69,7 @@ void write_problem_description(std::ostream& os, const CaseRecord& problem) {
   line(os, d.f == 0   ? " CREEPAGE PRESCRIBED"
            : d.f == 1 ? " X-FORCE,  Y-CREEPAGE PRESCRIBED"
                       : " TANGENTIAL FORCE PRESCRIBED");
-  if (problem.solver.maxout <= 1) {
-    line(os, " JOHNSON\"S METHOD IS USED FOR THE FRICTIONAL STRESS");
-  } else {
-    line(os, fmt::format(" PANAGIOTOPOULOS\" METHOD IS USED FOR THE FRICTIONAL STRESS. MAXOUT={}",
-                         fortran_i(problem.solver.maxout, 3)));
-  }
+  line(os, frictional_stress_method(problem.solver.maxout));
 }
 
 // Hertz data of Hertzian potential contacts; labels pad to column 43 so values start at 44.
@@ -183,6 +178,14 @@ void write_material_block(std::ostream& os, const CaseRecord& problem, const Sol
   }
 }
 
+}  // namespace
+
+std::string frictional_stress_method(int maxout) {
+  if (maxout <= 1) return " JOHNSON\"S METHOD IS USED FOR THE FRICTIONAL STRESS";
+  return fmt::format(" PANAGIOTOPOULOS\" METHOD IS USED FOR THE FRICTIONAL STRESS. MAXOUT={}",
+                     fortran_i(maxout, 3));
+}
+
 // Header of the law's parameter columns; `prefix` holds the IY column for per-row friction.
 std::string friction_header(int law, const std::string& prefix) {
   switch (law) {
@@ -212,6 +215,8 @@ std::string friction_values(int law, double fstat, double fkin, const std::array
       return g12(fstat) + g12(fkin);
   }
 }
+
+namespace {
 
 void write_friction_block(std::ostream& os, const Friction& fr, int output_digit) {
   line(os, "");

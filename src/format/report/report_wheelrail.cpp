@@ -14,6 +14,7 @@
 #include "format/report/report_internal.hpp"
 #include "format/report/report_subsurface.hpp"
 #include "format/report/report_values.hpp"
+#include "format/report/report_wheelrail_inputs.hpp"
 #include "format/report/report_writer.hpp"
 
 namespace rollcontact::format {
@@ -28,9 +29,8 @@ std::string f4(double v) {
 
 void write_trace(std::ostream& os, const WheelRailSolution& s) {
   for (const VerticalForceStep& t : s.trace)
-    line(os, fmt::format("    {:6d}, NR,  z_ws, Fz: {}{}, dFz/dz: {}", t.iteration,
-                         fmt_sig(12, 4, 4, t.z_ws_mm), fmt_sig(12, 4, 4, t.fz_N),
-                         fmt_sig(12, 4, 4, t.dfz_dz_N_per_mm)));
+    line(os, fmt::format("    {:6d}, NR,  z_ws, Fz: {}{}, dFz/dz:{}", t.iteration, f4(t.z_ws_mm),
+                         fmt_sig(12, 4, 4, t.fz_N), fmt_sig(12, 4, 4, t.dfz_dz_N_per_mm)));
 }
 
 /// A flexible wheelset's deviations and rates (spec/wheelrail-advanced.md §5.1), when any is set.
@@ -62,19 +62,8 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
   line(os, fmt::format(" HGIAOWR.  HEAT {:3d}, GAUSEI {}, IESTIM {}, MATFIL {}, OUTPUT {}, "
                        "FLOW {:3d}, RETURN {}",
                        d.h, d.g, d.i, d.a, d.o, d.w, d.r));
-  line(os, std::string(" VERTICAL PROBLEM WITH PRESCRIBED ") +
-               (d.n == 1 ? "VERTICAL FORCE" : "POSITION") + ", FULL SOLUTION");
-  if (d.t >= 1)  // module 1's creepages come from the kinematics
-    line(os, std::string(d.t == 1   ? " SHIFT TRANSIENT"
-                         : d.t == 2 ? " TRANSIENT ROLLING"
-                                    : " STEADY STATE ROLLING") +
-                 ", CREEPAGE PRESCRIBED");
-  line(os, "");
-  line(os, " DISCRETISATION PARAMETERS");
-  line(os, "     DX          DS          DQREL       A_SEP       D_SEP       D_COMB");
-  const WheelRailDiscretisation& ds = r.discretisation;
-  line(os, "  " + sig(ds.dx) + sig(ds.ds) + sig(ds.dqrel) + sig(ds.a_sep) + sig(ds.d_sep) +
-               sig(ds.d_comb));
+  report::write_wheelrail_problem_lines(os, r);
+  report::write_wheelrail_input_blocks(os, r, s.material);
   const RailDeflection& rd = s.rail_deflection;
   if (rd.active && (d.z == 2 || d.z == 3)) {  // with the rail deviations (spec §2.8)
     line(os, "");
@@ -89,20 +78,21 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
   line(os, std::string("     ") + (r.is_roller() ? "X_WS" : "S_WS") +
                "        Y_WS        Z_WS        ROLL_WS     YAW_WS      PITCH_WS");
   const WheelsetMotion& m = r.motion;
-  line(os, "  " + sig(m.s) + sig(m.y) + sig(s.z_ws_mm) + sig(m.roll) + sig(m.yaw) + sig(m.pitch));
+  line(os, "  " + sig(m.s) + sig(m.y) + f4(s.z_ws_mm) + sig(m.roll) + sig(m.yaw) + sig(m.pitch));
   line(os, "");
   line(os, std::string("     ") + (r.is_roller() ? "RPITCH " : "VX_WS  ") +
                "     VY_WS       VZ_WS       VROLL_WS    VYAW_WS     VPITCH_WS");
   line(os, "  " + sig(r.is_roller() ? m.rpitch : m.vs) + sig(m.vy) + sig(m.vz) + sig(m.vroll) +
                sig(m.vyaw) + fmt_sig(12, 8, 8, s.vpitch_rad_s));  // solved for F=1
   write_wheel_deviations(os, r.wheel_deviations);
+  line(os, "");
 }
 
 void write_totals(std::ostream& os, const WheelRailRecord& r, const WheelRailSolution& s) {
   line(os, "");
   line(os, r.is_roller() ? " TOTAL FORCES ON ROLLER" : " TOTAL FORCES ON RAIL");
   line(os, "     FX(TR)      FY(TR)      FZ(TR)      FX(WS)      FY(WS)      FZ(WS)");
-  line(os, "  " + sig(s.force_tr.x) + sig(s.force_tr.y) + sig(s.force_tr.z) + sig(s.force_ws.x) +
+  line(os, sig(s.force_tr.x) + sig(s.force_tr.y) + sig(s.force_tr.z) + sig(s.force_ws.x) +
                sig(s.force_ws.y) + sig(s.force_ws.z));
 }
 
@@ -119,11 +109,11 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
     line(os, "");
     line(os, " CONTACT REFERENCE LOCATION");
     line(os, "     XCP(TR)     YCP(TR)     ZCP(TR)    DELTCP(TR)   YCP(R)      ZCP(R)");
-    line(os, "  " + f4(w.reference_tr.x) + f4(w.reference_tr.y) + f4(w.reference_tr.z) +
+    line(os, f4(w.reference_tr.x) + f4(w.reference_tr.y) + f4(w.reference_tr.z) +
                  f4(w.contact_angle_rad) + f4(w.y_rail_mm) + f4(w.z_rail_mm));
     line(os, "");
     line(os, "     XCP(W)      YCP(W)      ZCP(W)");
-    line(os, "  " + f4(w.reference_wheel.x) + f4(w.reference_wheel.y) + f4(w.reference_wheel.z));
+    line(os, f4(w.reference_wheel.x) + f4(w.reference_wheel.y) + f4(w.reference_wheel.z));
     if (w.conformal.active) report::write_conformal_diagnostics(os, w);
     if (!w.conformal.row_friction.empty()) {
       report::write_row_friction(os, w.conformal);
@@ -131,15 +121,19 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
       line(os, "");
       line(os, " FRICTION LAW PARAMETERS");
       line(os, "     FSTAT       FKIN");
-      line(os, "  " + sig(w.friction.static_coefficient) + sig(w.friction.kinetic_coefficient));
+      line(os, "  " + fortran_g(w.friction.static_coefficient, 12, 4) +
+                   fortran_g(w.friction.kinetic_coefficient, 12, 4));
     }
+    report::write_patch_simplified(os, r, w.solution);
     line(os, "");
     line(os, " KINEMATIC CONSTANTS");
     line(os, "     CHI         DQ          VELOC       CKSI        CETA        CPHI");
-    line(os, "  " + sig(w.chi_rad) + sig(w.dq_mm) + sig(w.veloc_mm_s) + sig(w.xi) + sig(w.eta) +
-                 sig(w.phi_per_mm));
+    line(os, "  " + fortran_g(w.chi_rad, 12, 4) + fortran_g(w.dq_mm, 12, 4) + sig(w.veloc_mm_s) +
+                 sig(w.xi) + sig(w.eta) + sig(w.phi_per_mm));
   }
-  const double mu = static_friction(r.friction);
+  // V=1,2: the relative forces are scaled by the patch's own coefficient, as CONTACT does.
+  const double mu =
+      r.variable_friction.v != 0 ? w.friction.static_coefficient : static_friction(r.friction);
   if (w.conformal.active) {
     // V=1 prints relative forces unscaled (wheelrail-advanced.md §3.3); otherwise by the
     // patch's coefficient, as the planar block.
@@ -148,7 +142,7 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
   } else {
     write_planar_forces(os, r, w, mu);
   }
-  if (d.o >= 2) report::write_statistics(os, identity, w.solution);
+  if (d.o >= 2) report::write_statistics(os, identity, w.solution, false);
   if (d.o >= 3) {
     line(os, "");
     line(os, " FORM OF THE CONTACT, ADHESION AND SLIP-AREA`S:");
@@ -190,6 +184,7 @@ void write_planar_forces(std::ostream& os, const WheelRailRecord& r, const Wheel
 void write_wheelrail_case_report(std::ostream& os, const WheelRailRecord& record,
                                  const CaseRecord& identity, const WheelRailSolution& solution) {
   write_case_header(os, identity);
+  report::write_profile_reading(os, record);
   write_trace(os, solution);
   for (const std::string& w : solution.warnings) line(os, " WARNING: " + w);
   if (!solution.converged)

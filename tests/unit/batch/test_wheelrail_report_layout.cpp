@@ -1,0 +1,129 @@
+// The module-1 report is laid out as CONTACT's (spec/outputs.md §3.8), so that scripts reading
+// CONTACT's wheel/rail reports read ours: for every case of mbench_a22_kpec (KPEC, ANALYN,
+// Fastsim, the exact solvers; profiles and track read in case 1) and mbench_a22_varfric (friction
+// varying with the rail angle and along the track, conformal patches), from the problem echo up to
+// the first patch's statistics, every title line equals the reference's and every value line has
+// its fields ending in the same columns (diagnostic lines: the same text, numbers of the same
+// widths). The numbers are validate's business, not this test's.
+
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "batch/run_input.hpp"
+#include "support/examples.hpp"
+
+namespace rollcontact::batch {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path examples_dir{ROLLCONTACT_EXAMPLES_DIR};
+
+std::string rtrim(std::string s) {
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
+  return s;
+}
+
+/// Per case number, the lines from " WHEEL-RAIL CONTACT" up to the first " CONTACT STATISTICS"
+/// (trailing blanks removed: CONTACT's g12.4 pads numbers with blanks, its lines end anywhere).
+std::map<int, std::vector<std::string>> echo_blocks(const fs::path& report) {
+  std::ifstream in(report);
+  std::map<int, std::vector<std::string>> out;
+  std::string l;
+  int current = 0;
+  bool inside = false;
+  while (std::getline(in, l)) {
+    l = rtrim(l);
+    if (l.rfind(" Case", 0) == 0) {
+      current = std::stoi(l.substr(5));
+      inside = false;
+      continue;
+    }
+    if (l.rfind(" WHEEL-RAIL CONTACT", 0) == 0) inside = true;
+    if (l.rfind(" CONTACT STATISTICS", 0) == 0) inside = false;
+    if (inside && current > 0) out[current].push_back(l);
+  }
+  return out;
+}
+
+/// A value line starts with a number; its shape is the column where each field ends.
+bool is_value_line(const std::string& l) {
+  std::istringstream s(l);
+  std::string first;
+  if (!(s >> first)) return false;
+  const char c = first[0];
+  return std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '.';
+}
+
+/// A title or diagnostic line with its digits masked: the text and the numbers' widths count.
+std::string masked(std::string l) {
+  for (char& c : l)
+    if (std::isdigit(static_cast<unsigned char>(c))) c = '9';
+  return l;
+}
+
+std::vector<std::size_t> field_ends(const std::string& l) {
+  std::vector<std::size_t> ends;
+  for (std::size_t i = 0; i < l.size(); ++i)
+    if (l[i] != ' ' && (i + 1 == l.size() || l[i + 1] == ' ')) ends.push_back(i + 1);
+  return ends;
+}
+
+void expect_same_layout(const std::string& example) {
+  const fs::path dir = fs::temp_directory_path() / ("rollcontact_layout_" + example);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const std::string& name :
+       {example + ".inp", std::string("MBench_UIC60_v3.prr"), std::string("MBench_S1002_v3.prw")})
+    fs::copy_file(examples_dir / name, dir / name);
+  RunOptions options;
+  options.solve_unvalidated = true;  // the layout of every case, validated numbers or not
+  const RunResult r = run_input_file(dir / (example + ".inp"), options);
+  for (const CaseOutcome& c : r.cases) ASSERT_TRUE(c.solved) << example << ": " << c.error;
+
+  const auto ref = echo_blocks(examples_dir / (example + ".ref_out"));
+  const auto ours = echo_blocks(dir / (example + ".out"));
+  ASSERT_FALSE(ref.empty());
+  ASSERT_EQ(ours.size(), ref.size()) << example;
+  for (const auto& [number, ref_lines] : ref) {
+    const std::vector<std::string>& our_lines = ours.at(number);
+    ASSERT_EQ(our_lines.size(), ref_lines.size())
+        << example << " case " << number << ": a block too many or too few";
+    for (std::size_t i = 0; i < ref_lines.size(); ++i) {
+      const std::string& a = ref_lines[i];
+      const std::string& b = our_lines[i];
+      if (is_value_line(a)) {
+        EXPECT_EQ(field_ends(b), field_ends(a)) << example << " case " << number << " line " << i
+                                                << "\n  ref:  '" << a << "'\n  ours: '" << b << "'";
+      } else {
+        EXPECT_EQ(masked(b), masked(a)) << example << " case " << number << " line " << i;
+      }
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST(WheelRailReportLayout, ApproximateMethodsAndFastsimAsContactPrintsThem) {
+  REQUIRE_EXAMPLES();
+  expect_same_layout("mbench_a22_kpec");
+}
+
+TEST(WheelRailReportLayout, VariableFrictionAndConformalPatchesAsContactPrintsThem) {
+  REQUIRE_EXAMPLES();
+  expect_same_layout("mbench_a22_varfric");
+}
+
+TEST(WheelRailReportLayout, RightAndLeftWheelsAsContactPrintsThem) {
+  REQUIRE_EXAMPLES();
+  expect_same_layout("mbench_a22_right");
+  expect_same_layout("mbench_a22_left");
+}
+
+}  // namespace
+}  // namespace rollcontact::batch
