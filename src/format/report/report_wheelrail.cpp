@@ -90,10 +90,19 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
 
 void write_totals(std::ostream& os, const WheelRailRecord& r, const WheelRailSolution& s) {
   line(os, "");
-  line(os, r.is_roller() ? " TOTAL FORCES ON ROLLER" : " TOTAL FORCES ON RAIL");
+  // O ≥ 4 adds the moments about the rail profile's marker (track coordinates) and about the
+  // wheel profile's marker (wheelset coordinates), as cntc_getglobalforces returns them.
+  const bool moments = r.digits.o >= 4;
+  line(os, fmt::format(" TOTAL FORCES {}ON {}", moments ? "AND MOMENTS " : "",
+                       r.is_roller() ? "ROLLER" : "RAIL"));
   line(os, "     FX(TR)      FY(TR)      FZ(TR)      FX(WS)      FY(WS)      FZ(WS)");
   line(os, sig(s.force_tr.x) + sig(s.force_tr.y) + sig(s.force_tr.z) + sig(s.force_ws.x) +
                sig(s.force_ws.y) + sig(s.force_ws.z));
+  if (!moments) return;
+  line(os, "");
+  line(os, "    MX@R(TR)    MY@R(TR)    MZ@R(TR)    MX@W(WS)    MY@W(WS)    MZ@W(WS)");
+  line(os, sig(s.moment_tr.x) + sig(s.moment_tr.y) + sig(s.moment_tr.z) + sig(s.moment_ws.x) +
+               sig(s.moment_ws.y) + sig(s.moment_ws.z));
 }
 
 /// The planar patch's force block (FN FX FS MN …, FN/G FX/FSTAT/FN …).

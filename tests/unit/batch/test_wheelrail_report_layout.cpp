@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -123,6 +124,57 @@ TEST(WheelRailReportLayout, RightAndLeftWheelsAsContactPrintsThem) {
   REQUIRE_EXAMPLES();
   expect_same_layout("mbench_a22_right");
   expect_same_layout("mbench_a22_left");
+}
+
+/// O = 4 adds the total moments about the profiles' markers (spec/outputs.md §3.8): they are
+/// the solution's, and about the rail marker the single patch's force acting at its reference
+/// point gives them but for its own torsional moment MN.
+TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
+  REQUIRE_EXAMPLES();
+  const fs::path dir = fs::temp_directory_path() / "rollcontact_layout_moments";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const char* name : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
+    fs::copy_file(examples_dir / name, dir / name);
+  std::ifstream in(examples_dir / "mbench_a22_right.inp");
+  std::string text, l;
+  for (int n = 1; std::getline(in, l) && n <= 26; ++n)
+    text += (n == 15 ? std::string(" 0000421    H-G-I-A-O-W-R") : l) + "\n";
+  std::ofstream(dir / "case.inp") << text << " 0 MODULE\n";
+  RunOptions options;
+  const RunResult r = run_input_file(dir / "case.inp", options);
+  ASSERT_EQ(r.cases.size(), 1U);
+  ASSERT_TRUE(r.cases[0].solved) << r.cases[0].error;
+  const WheelRailSolution& s = r.cases[0].wheelrail;
+  ASSERT_EQ(s.patches.size(), 1U);
+
+  std::ifstream out(dir / "case.out");
+  std::vector<std::string> lines;
+  while (std::getline(out, l)) lines.push_back(l);
+  std::vector<double> printed;
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+    if (lines[i].rfind(" TOTAL FORCES ON RAIL", 0) == 0) ADD_FAILURE() << "no moments title";
+    if (lines[i].find("MX@R(TR)") == std::string::npos) continue;
+    std::istringstream values(lines[i + 1]);
+    for (double v; values >> v;) printed.push_back(v);
+  }
+  ASSERT_EQ(printed.size(), 6U);
+  const Vector3 m[2] = {s.moment_tr, s.moment_ws};
+  for (int k = 0; k < 6; ++k) {
+    const Vector3& v = m[k / 3];
+    const double expected = k % 3 == 0 ? v.x : k % 3 == 1 ? v.y : v.z;
+    EXPECT_NEAR(printed[static_cast<std::size_t>(k)], expected, 5e-4 * std::abs(expected) + 1e-3);
+  }
+  // (p − m) × F about the rail marker, F the force on the rail at the reference point p.
+  const WheelRailPatch& w = s.patches[0];
+  const Vector3 d{w.reference_tr.x - s.rail_marker_tr.position.x,
+                  w.reference_tr.y - s.rail_marker_tr.position.y,
+                  w.reference_tr.z - s.rail_marker_tr.position.z};
+  const Vector3& f = s.force_tr;
+  const double mn = std::abs(w.solution.totals.mz);
+  EXPECT_NEAR(s.moment_tr.x, d.y * f.z - d.z * f.y, mn + 1e-6 * std::abs(d.y * f.z));
+  EXPECT_NEAR(s.moment_tr.z, d.x * f.y - d.y * f.x, mn + 1e-6 * std::abs(d.y * f.x));
+  fs::remove_all(dir);
 }
 
 }  // namespace
