@@ -79,7 +79,8 @@ std::vector<std::string> value_columns(bool rolling, bool plastic, bool heat) {
   return c;
 }
 
-void material_lines(std::string& out, const CaseRecord& problem, int ncol) {
+void material_lines(std::string& out, const CaseRecord& problem, const SimplifiedReport& simp,
+                    int ncol) {
   const ControlDigits& d = problem.digits;
   const Materials& m = problem.materials;
   const auto& mp = m.model_params;
@@ -106,7 +107,8 @@ void material_lines(std::string& out, const CaseRecord& problem, int ncol) {
     values += zeros(ncol - 10);
   } else {
     // M=2,3,5-7 (simplified theories): POISS2 is skipped for lack of columns, as in CONTACT.
-    // M=2 gives one flexibility for all three directions; M=3,5 derive them in the solver.
+    // M=2 gives one flexibility for all three directions; M=3,5 derive them in the solver:
+    // the effective ones it used where the case was solved, zeros otherwise.
     head = comment_line(lead + names({{"FLX1", 10},
                                       {"FLX2", 10},
                                       {"FLX3", 10},
@@ -115,8 +117,10 @@ void material_lines(std::string& out, const CaseRecord& problem, int ncol) {
                                       {"BETAMF", 8}}),
                         ncol - 11);
     const double flx = d.m == 2 ? mp[0] : 0.0;
+    const bool solved = d.m != 2 && simp.present;
     const std::size_t k0 = d.m == 2 ? 1 : 0;
-    values += g14(flx) + g14(flx) + g14(flx) + g14(mp[k0]) + g14(mp[k0 + 1]) + g14(mp[k0 + 2]) +
+    values += g14(solved ? simp.flx1 : flx) + g14(solved ? simp.flx2 : flx) +
+              g14(solved ? simp.flx3 : flx) + g14(mp[k0]) + g14(mp[k0 + 1]) + g14(mp[k0 + 2]) +
               zeros(ncol - 11);
   }
   out += head + "\n" + values + "\n";
@@ -250,7 +254,7 @@ std::string mat_file_text(const CaseRecord& problem, const Solution& solution,
          g14(ek.chi) + g14(ek.dq) + i6x8(wr.c1) + i6x8(wr.d) + g14(wr.ynom_whl) + zeros(ncol - 11) +
          "\n";
   // 4, 5: material and friction parameters.
-  material_lines(out, problem, ncol);
+  material_lines(out, problem, solution.simplified, ncol);
   friction_lines(out, problem, ek.veloc, ncol);
   // Column header and one row per element.
   std::string header = "%    I    IGS ";

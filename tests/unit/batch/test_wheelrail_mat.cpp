@@ -115,5 +115,37 @@ TEST(WheelRailMat, LeftWheelRowsRunTheOtherWayAlongY) {
   fs::remove_all(dir);
 }
 
+/// M=3 (Fastsim): the header's FLX1–3 are the effective flexibilities the solver used (they
+/// derive from the patch's ellipse; the input has none), not zeros.
+TEST(WheelRailMat, FastsimHeaderHoldsTheEffectiveFlexibilities) {
+  REQUIRE_EXAMPLES();
+  const fs::path dir = fs::temp_directory_path() / "rollcontact_wheelrail_mat_flx";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const char* name : {"mbench_a22_kpec.inp", "MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
+    fs::copy_file(examples_dir / name, dir / name);
+  RunOptions options;
+  options.solve_unvalidated = true;
+  const RunResult r = run_input_file(dir / "mbench_a22_kpec.inp", options);
+  ASSERT_GE(r.cases.size(), 4U);
+  const CaseOutcome& c4 = r.cases[3];  // ANALYN with Fastsim
+  ASSERT_TRUE(c4.solved) << c4.error;
+  const SimplifiedReport& simp = c4.wheelrail.patches.at(0).solution.simplified;
+  ASSERT_TRUE(simp.present);
+  EXPECT_GT(simp.flx1, 0.0);
+  std::vector<std::string> header;
+  rows_of(dir / "mbench_a22_kpec.0004a.mat", &header);
+  ASSERT_GE(header.size(), 5U);
+  std::istringstream line(header[4]);  // T M GG1 GG2 POISS1 FLX1 FLX2 FLX3 K0_MF ALFAMF BETAMF
+  std::vector<double> v;
+  for (double x; line >> x;) v.push_back(x);
+  ASSERT_GE(v.size(), 11U);
+  EXPECT_NEAR(v[5], simp.flx1, 5e-6 * simp.flx1);  // g14.6: 6 digits
+  EXPECT_NEAR(v[6], simp.flx2, 5e-6 * simp.flx2);
+  EXPECT_NEAR(v[7], simp.flx3, 5e-6 * simp.flx3);
+  EXPECT_EQ(v[8], 1.0);  // K0_MF as read
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rollcontact::batch
