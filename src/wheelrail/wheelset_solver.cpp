@@ -51,7 +51,9 @@ void vary_friction(const model::WheelRailProblem& p, PatchSetup& setup) {
 /// for validated results only, otherwise solved with a warning that says so.
 void unvalidated(const model::WheelRailProblem& p, const std::string& what,
                  std::vector<std::string>& warnings) {
-  if (p.validated_only) throw NotSupportedError("not supported yet: module 1 " + what);
+  if (p.validated_only)
+    throw NotSupportedError("not supported yet: module 1 " + what +
+                            " (not validated against CONTACT; solved with a warning on request)");
   const std::string warning = "not validated against CONTACT: " + what;
   if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end())
     warnings.push_back(warning);
