@@ -97,12 +97,17 @@ batch::RunOptions solver_run_options(const RunSettings& settings) {
 }
 
 /// Cases refused because their wheel/rail features are known to differ from CONTACT's
-/// reference results: say how to get our best answer anyway.
-void print_unvalidated_hint(const batch::RunResult& result) {
+/// reference results (solved with a warning under --unvalidated).
+std::size_t refused_as_unvalidated(const batch::RunResult& result) {
   std::size_t refused = 0;
   for (const CaseOutcome& c : result.cases)
     if (!c.solved && c.error.find("not validated against CONTACT") != std::string::npos) ++refused;
-  if (refused > 0)
+  return refused;
+}
+
+/// Says how to get our best answer for such cases anyway.
+void print_unvalidated_hint(const batch::RunResult& result) {
+  if (const std::size_t refused = refused_as_unvalidated(result); refused > 0)
     fmt::print(stderr,
                "note: {} case(s) refused as not validated against CONTACT; `rollcontact run "
                "--unvalidated` solves them, each with a warning in the report and the JSON\n",
@@ -218,6 +223,11 @@ int run_files_in_parallel(const RunSettings& settings) {
           o.line =
               fmt::format("{}: {} case(s), {} failed; wrote {} and {}", settings.inputs[k],
                           r.cases.size(), r.failed, r.report_path.string(), r.json_path.string());
+          if (const std::size_t refused = refused_as_unvalidated(r); refused > 0)
+            o.line += fmt::format(
+                " ({} refused as not validated against CONTACT: --unvalidated "
+                "solves them with a warning)",
+                refused);
         } catch (const InputError& e) {
           o.status = exit_input_error;
           o.line = fmt::format("rollcontact: error: {}", e.what());
