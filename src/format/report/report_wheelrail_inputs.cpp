@@ -105,21 +105,16 @@ void write_profile(std::ostream& os, const char* body, const ProfileSpec& ps) {
 
 void write_track(std::ostream& os, const WheelRailRecord& r) {
   const TrackDimensions& t = r.track;
-  // Rollers have a nominal radius where a track has its cant; GAUGHT ≤ 0 places the rail's
-  // origin at (RAILY0, RAILZ0) instead of at the gauge point (docs/decisions.md).
-  const char* third = r.is_roller() ? "     NOMRADR" : "        CANT";
-  const double third_value = r.is_roller() ? t.nomradr : t.cant;
-  const std::string third_field =
-      r.is_roller() ? fortran_f(third_value, 12, 3) : fortran_f(third_value, 12, 4);
+  // GAUGHT ≤ 0 places the rail's origin at (RAILY0, RAILZ0) instead of at the gauge point;
+  // a roller rig has its nominal radius where a track has its cant (docs/decisions.md).
+  const bool gauge = t.gaught > 0.0, roller = r.is_roller();
   line(os, "");
   line(os, " TRACK DIMENSIONS AND RAIL POSITION");
-  if (t.gaught > 0.0) {
-    line(os, std::string("    GAUGHT      GAUGWD") + third + "        CURV");
-    line(os, fortran_f(t.gaught, 10, 3) + fortran_f(t.gaugwd, 12, 3) + third_field + sig(t.curv));
-  } else {
-    line(os, std::string("    RAILY0      RAILZ0") + third + "        CURV");
-    line(os, fortran_f(t.raily0, 10, 3) + fortran_f(t.railz0, 12, 3) + third_field + sig(t.curv));
-  }
+  line(os, fmt::format("    {}      {}{}        CURV", gauge ? "GAUGHT" : "RAILY0",
+                       gauge ? "GAUGWD" : "RAILZ0", roller ? "     NOMRADR" : "        CANT"));
+  line(os, fortran_f(gauge ? t.gaught : t.raily0, 10, 3) +
+               fortran_f(gauge ? t.gaugwd : t.railz0, 12, 3) +
+               (roller ? fortran_f(t.nomradr, 12, 3) : fortran_f(t.cant, 12, 4)) + sig(t.curv));
 }
 
 }  // namespace
