@@ -43,6 +43,12 @@ class PatchSolver {
   /// problems with becomes_previous = false (a force iteration) and keeps one as the result.
   void set_previous(Solution solution, double origin_x_mm, double origin_y_mm);
 
+  /// Adds u_n = A·p_n and the elastic energy ½Σ(p_n·u_n + p_t·u_t)·δxδy to `solution`, which
+  /// this solver returned for `problem` with model::SolverOptions::defer_elastic_energy set
+  /// (KPEC/ANALYN pressures; nothing to do otherwise). u_t is Fastsim's own where it solved the
+  /// tangential part.
+  void complete_elastic_energy(const model::PatchProblem& problem, Solution& solution);
+
   const SolveOptions& options() const noexcept;
 
   struct Impl;  ///< cached operators and the previous solution (src/contact/patch_solver_impl.hpp)

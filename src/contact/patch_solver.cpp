@@ -1173,13 +1173,23 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   s.ux.assign(n, 0.0);
   s.uy.assign(n, 0.0);
   s.un.assign(n, 0.0);
+  // The normal displacements are known unless the pressure is prescribed outright (B=2-4): the
+  // exact normal solve gives them, and KPEC/ANALYN pressures (B=5, 6) are scaled to the approach
+  // through them (their product deferred on request, SolverOptions::defer_elastic_energy). The
+  // energy counts them and Fastsim's own u = L·p: CONTACT's ELAST.EN (docs/decisions.md).
+  const bool normal_known = !prescribed_ || (approximate_ && !problem_.solver.defer_elastic_energy);
+  const auto normal_displacements = [&] {
+    if (normal_un_.size() == n) {
+      s.un = std::move(normal_un_);  // the same product of the same pressure, made already
+    } else {
+      NormalOperators& ops = st_.operators.normal(grid_, s.material, interaction_);
+      ops.product->apply(s.pn.data(), s.un.data());
+    }
+  };
   if (simplified_ && tang != nullptr) {
-    // Fastsim's own displacements u = L·p; no elastic energy (physics.md §7.2, §11).
     s.ux = simplified_ux_;
     s.uy = simplified_uy_;
-    if (!prescribed_)
-      st_.operators.normal(grid_, s.material, interaction_)
-          .product->apply(s.pn.data(), s.un.data());
+    if (normal_known) normal_displacements();
   } else if (rough_) {
     // A rough solve only informs the next step (SolverOptions::rough_tolerance): no
     // displacements beyond the normal solve's own, no elastic energy.
@@ -1188,11 +1198,8 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
     const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
     double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};
     tops_->full_product().apply(in, out);
-  } else if (!prescribed_ && normal_un_.size() == n) {
-    s.un = std::move(normal_un_);  // the same product of the same pressure, made already
-  } else if (!prescribed_) {
-    NormalOperators& ops = st_.operators.normal(grid_, s.material, interaction_);
-    ops.product->apply(s.pn.data(), s.un.data());
+  } else if (normal_known) {
+    normal_displacements();
   }
 
   Totals& t = s.totals;
@@ -1232,8 +1239,8 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   t.fy *= area;
   t.mz *= area;
   t.contact_area = st.ncon * area;
-  // N·mm → J; not defined with prescribed pressures (u_n unknown) or the simplified theory.
-  t.elastic_energy = prescribed_ || simplified_ || rough_ ? 0.0 : 0.5e-3 * energy * area;
+  // N·mm → J; not defined with prescribed pressures (u_n unknown).
+  t.elastic_energy = !normal_known || rough_ ? 0.0 : 0.5e-3 * energy * area;
   t.frictional_power = 1e-3 * power * area / s.kinematics.dt;  // N·mm/s → W (T=1: J per step)
 }
 
@@ -1308,6 +1315,27 @@ Solution PatchSolver::solve(const model::PatchProblem& problem) {
     st.previous_origin_y = problem.sequence.origin_y_mm;
   }
   return sol;
+}
+
+void PatchSolver::complete_elastic_energy(const model::PatchProblem& problem, Solution& s) {
+  const model::PressureModel pressure = problem.normal.pressure;
+  if (!problem.solver.defer_elastic_energy ||
+      (pressure != model::PressureModel::Kpec && pressure != model::PressureModel::Analyn))
+    return;
+  const std::size_t n = s.grid.size();
+  if (s.pn.size() != n) return;
+  // The operator the solve used: the same grid, material and IPLAN=4 parts.
+  geometry::PlanformParts parts = geometry::planform_parts(s.grid, problem.gap);
+  NormalOperators& ops = impl_->operators.normal(s.grid, s.material, interaction_of(parts));
+  s.un.assign(n, 0.0);
+  ops.product->apply(s.pn.data(), s.un.data());
+  const auto at = [](const std::vector<double>& f, std::size_t i) {
+    return i < f.size() ? f[i] : 0.0;
+  };
+  double energy = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    energy += s.pn[i] * s.un[i] + at(s.px, i) * at(s.ux, i) + at(s.py, i) * at(s.uy, i);
+  s.totals.elastic_energy = 0.5e-3 * energy * s.grid.element_area();  // N·mm → J
 }
 
 }  // namespace rollcontact

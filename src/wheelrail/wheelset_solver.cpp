@@ -138,6 +138,15 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
     // Subsurface stresses of the final patches only (WheelsetSolver::solve), not of every
     // iterate of the force iterations: they cost more than the contact problem itself.
     setup.problem.subsurface.clear();
+    // KPEC/ANALYN: the elastic energy of the result that stands only (complete_energies()),
+    // not a half-space product in each of the iteration's trial solves.
+    setup.problem.solver.defer_elastic_energy = true;
+    const model::PressureModel model_of_pressure = setup.problem.normal.pressure;
+    if (!normal_only && (model_of_pressure == model::PressureModel::Kpec ||
+                         model_of_pressure == model::PressureModel::Analyn)) {
+      if (k == 0) approximate_problems.clear();
+      approximate_problems.push_back(setup.problem);
+    }
     geometry_seconds += since(start);
     start = Clock::now();
     const model::PressureModel pressure = setup.problem.normal.pressure;
@@ -249,6 +258,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_case(const model::WheelRailProblem
       result.rail_deflection.dz_mm = dz;
     }
   }
+  complete_energies(result);
   // Judged on the state that stands: an iterate of the vertical-force iteration may pass through
   // such a state (mbench_a22_kpec c2 does where the deepest point changes lobes) and leave it.
   if (p.patch.normal.pressure == model::PressureModel::Kpec)

@@ -143,6 +143,15 @@ struct WheelsetSolver::Impl {
   /// The last complete solve had patches whose angles the D_TURN rule turned (validated_only
   /// refuses its result: docs/decisions.md, "Variable friction (V=1, 2) and the D_TURN rule").
   bool last_solve_turned = false;
+  /// KPEC/ANALYN: the patch problems of the last full solve, whose results stand when the
+  /// iteration ends; their u_n and elastic energy are made then (complete_energies()).
+  std::vector<model::PatchProblem> approximate_problems;
+  void complete_energies(WheelRailSolution& result) {
+    if (approximate_problems.size() != result.patches.size()) return;
+    for (std::size_t k = 0; k < result.patches.size(); ++k)
+      solver_for(k).complete_elastic_energy(approximate_problems[k], result.patches[k].solution);
+    approximate_problems.clear();
+  }
   /// The last two converged vertical-force iterations of consecutive cases, the last at the
   /// back: approach z_ws − z_first-contact [mm] and force [N] (the next case's start).
   struct ApproachAtForce {

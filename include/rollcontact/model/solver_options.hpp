@@ -26,6 +26,11 @@ struct SolverOptions {
   /// the iteration). Such a solution has no displacements beyond the normal solve's u_n and no
   /// elastic energy (nothing uses them).
   double rough_tolerance = 0.0;
+  /// KPEC/ANALYN pressures (B=5, 6): leave out u_n = A·p_n and the elastic energy, which cost a
+  /// half-space product the pressures themselves never need. For a caller that makes many trial
+  /// solves (the vertical-force iteration) and completes the one it keeps with
+  /// PatchSolver::complete_elastic_energy().
+  bool defer_elastic_energy = false;
   int max_inner_iterations = 999;        ///< CG / Gauss–Seidel / Krylov products
   int max_newton_iterations = 30;        ///< force iteration (prescribed tangential forces)
   int max_normal_tangential_passes = 1;  ///< Panagiotopoulos passes (1: Johnson's process)
