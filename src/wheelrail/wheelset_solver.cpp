@@ -90,6 +90,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   out.material = elastic::combine_bodies(p.patch.bodies, std::abs(model::rolling_speed_mm_s(p)));
   if (!normal_only) {
     last_solve_turned = false;
+    approximate_problems.clear();  // this solve's patches replace the last full solve's
     for (const ContactRegion& r : search.patches) last_solve_turned |= r.angle_turned;
   }
   Vec3 total_tr{}, total_ws{}, moment_tr{}, moment_ws{};
@@ -141,15 +142,12 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
     // KPEC/ANALYN: the elastic energy of the result that stands only (complete_energies()),
     // not a half-space product in each of the iteration's trial solves.
     setup.problem.solver.defer_elastic_energy = true;
-    const model::PressureModel model_of_pressure = setup.problem.normal.pressure;
-    if (!normal_only && (model_of_pressure == model::PressureModel::Kpec ||
-                         model_of_pressure == model::PressureModel::Analyn)) {
-      if (k == 0) approximate_problems.clear();
+    const model::PressureModel pressure = setup.problem.normal.pressure;
+    if (!normal_only &&
+        (pressure == model::PressureModel::Kpec || pressure == model::PressureModel::Analyn))
       approximate_problems.push_back(setup.problem);
-    }
     geometry_seconds += since(start);
     start = Clock::now();
-    const model::PressureModel pressure = setup.problem.normal.pressure;
     if (pressure == model::PressureModel::Analyn && search.patches[k].regions > 1)
       unvalidated(p,
                   "ANALYN (B=6) on a patch combined from several interpenetration regions "
