@@ -20,12 +20,18 @@ std::string a12(std::string_view label);
 /// The reports' usual real field: 12 wide, 4 significant digits (fmt_sig(12, 4, 4, v)).
 std::string sig(double v);
 
+/// Fortran g12.4 (`  0.2800    `, `0.1980E-04`): the reports' input echo fields.
+std::string g12(double v);
+
 /// ` JOHNSON"S METHOD …` (MAXOUT ≤ 1) or ` PANAGIOTOPOULOS" METHOD … MAXOUT=  n`.
 std::string frictional_stress_method(int maxout);
 
 /// The friction law's column header after `prefix`, and one set of its values (g12.4 fields).
 std::string friction_header(int law, const std::string& prefix);
 std::string friction_values(int law, double fstat, double fkin, const std::array<double, 4>& p);
+
+/// FRICTION LAW PARAMETERS: the law's single set, or V=3's rows (all for O ≥ 4).
+void write_friction_block(std::ostream& os, const Friction& fr, int output_digit);
 
 /// Module-3 parameter blocks printed for O >= 2 (digit echo up to kinematic constants).
 void write_parameter_blocks(std::ostream& os, const CaseRecord& problem, const Solution& solution);

@@ -17,9 +17,6 @@
 namespace rollcontact::format::report {
 namespace {
 
-std::string g12(double v) {
-  return fortran_g(v, 12, 4);
-}
 std::string i2(int v) {
   return fortran_i(v, 2);
 }
@@ -216,8 +213,6 @@ std::string friction_values(int law, double fstat, double fkin, const std::array
   }
 }
 
-namespace {
-
 void write_friction_block(std::ostream& os, const Friction& fr, int output_digit) {
   line(os, "");
   line(os, " FRICTION LAW PARAMETERS");
@@ -239,6 +234,8 @@ void write_friction_block(std::ostream& os, const Friction& fr, int output_digit
     }
   }
 }
+
+namespace {
 
 void write_kinematics_block(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
   const auto& d = problem.digits;

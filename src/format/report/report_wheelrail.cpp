@@ -21,6 +21,7 @@ namespace rollcontact::format {
 
 namespace {
 
+using report::g12;
 using report::line;
 using report::sig;
 std::string f4(double v) {
@@ -130,15 +131,14 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
       line(os, "");
       line(os, " FRICTION LAW PARAMETERS");
       line(os, "     FSTAT       FKIN");
-      line(os, "  " + fortran_g(w.friction.static_coefficient, 12, 4) +
-                   fortran_g(w.friction.kinetic_coefficient, 12, 4));
+      line(os, "  " + g12(w.friction.static_coefficient) + g12(w.friction.kinetic_coefficient));
     }
     report::write_patch_simplified(os, r, w.solution);
     line(os, "");
     line(os, " KINEMATIC CONSTANTS");
     line(os, "     CHI         DQ          VELOC       CKSI        CETA        CPHI");
-    line(os, "  " + fortran_g(w.chi_rad, 12, 4) + fortran_g(w.dq_mm, 12, 4) + sig(w.veloc_mm_s) +
-                 sig(w.xi) + sig(w.eta) + sig(w.phi_per_mm));
+    line(os, "  " + g12(w.chi_rad) + g12(w.dq_mm) + sig(w.veloc_mm_s) + sig(w.xi) + sig(w.eta) +
+                 sig(w.phi_per_mm));
   }
   // V=1,2: the relative forces are scaled by the patch's own coefficient, as CONTACT does.
   const double mu =

@@ -13,10 +13,6 @@ namespace rollcontact::format::report {
 
 namespace {
 
-std::string g12(double v) {
-  return fortran_g(v, 12, 4);
-}
-
 // Module 1's material constants: g12.4 where it prints fixed (`  0.2800    `), CONTACT's
 // significant-digit format where g12.4 would switch to E (`   8.200E+04`, `   1.000E-05`).
 std::string g12_or_sig(double v) {
@@ -67,13 +63,12 @@ void write_material(std::ostream& os, const WheelRailRecord& r, const CombinedMa
 void write_friction(std::ostream& os, const WheelRailRecord& r) {
   const Friction& fr = r.friction;
   const VariableFriction& vf = r.variable_friction;
-  line(os, "");
-  line(os, " FRICTION LAW PARAMETERS");
   if (vf.v == 0 || vf.sets.empty()) {
-    line(os, friction_header(fr.law, "  "));
-    line(os, "  " + friction_values(fr.law, fr.fstat, fr.fkin, fr.params));
+    write_friction_block(os, fr, r.digits.o);  // one set, as module 3 prints it
     return;
   }
+  line(os, "");
+  line(os, " FRICTION LAW PARAMETERS");
   // V=1: one set per rail surface inclination ALPHA [rad]; V=2: per track position SVF [mm].
   line(os, friction_header(fr.law, vf.v == 1 ? "     ALPHA    " : "     SVF      "));
   for (std::size_t i = 0; i < vf.sets.size() && i < vf.positions.size(); ++i) {

@@ -33,6 +33,10 @@ std::string sig(double v) {
   return fmt_sig(12, 4, 4, v);
 }
 
+std::string g12(double v) {
+  return fortran_g(v, 12, 4);
+}
+
 }  // namespace report
 
 namespace {
