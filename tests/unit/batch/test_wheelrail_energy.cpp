@@ -19,13 +19,10 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path examples_dir{ROLLCONTACT_EXAMPLES_DIR};
 
-double value_of(const format::Report& r, int case_number, const std::string& key) {
-  for (const format::ReportCase& c : r.cases)
-    if (c.number == case_number) {
-      const auto it = c.values.find(key);
-      return it == c.values.end() ? std::nan("") : it->second;
-    }
-  return std::nan("");
+/// A patch value of case `number` of a parsed report (NaN when the case or value is missing).
+double value_of(const format::Report& r, int number, const std::string& key) {
+  const format::ReportCase* c = r.find(number);
+  return c != nullptr ? c->value(key).value_or(std::nan("")) : std::nan("");
 }
 
 TEST(WheelRailEnergy, ApproximatePressuresWithFastsimGiveContactsElasticEnergy) {
