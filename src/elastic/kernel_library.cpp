@@ -17,6 +17,31 @@ std::size_t bytes_of(const Kernel& k) {
   return bytes_for(k.mx(), k.my());
 }
 
+/// A rolling shift of whole elements, (nx·dx, ny·dy) exactly, of a kernel whose closed forms
+/// see the shift only through the corner abscissae: its kernel is the unshifted one read nx, ny
+/// offsets on. The abscissae agree bit for bit: (i − mx + ½)·dx + nx·dx and (i + nx − mx + ½)·dx
+/// are both exact in long double while the odd numerator 2(i − mx) + 1 + 2nx has at most 11 bits
+/// (dx's 53 bits and those fit the 64-bit mantissa), hence the bound on the grid.
+struct WholeSteps {
+  int nx = 0, ny = 0;
+};
+std::optional<WholeSteps> whole_steps(const Grid& grid, const CombinedMaterial& m, double shift_x,
+                                      double shift_y) {
+  if (shift_x == 0.0 && shift_y == 0.0) return std::nullopt;
+  if (m.elements != model::TractionElements::piecewise_constant) return std::nullopt;
+  const auto steps = [](double shift, double d) -> std::optional<int> {
+    const double n = std::round(shift / d);
+    if (!(std::abs(n) <= 8.0) || n * d != shift) return std::nullopt;
+    return static_cast<int>(n);
+  };
+  const std::optional<int> nx = steps(shift_x, grid.dx), ny = steps(shift_y, grid.dy);
+  if (!nx || !ny) return std::nullopt;
+  constexpr int kExactExtent = 1000;  // 2·1008 + 1 < 2^11
+  if (grid.mx + std::abs(*nx) > kExactExtent || grid.my + std::abs(*ny) > kExactExtent)
+    return std::nullopt;
+  return WholeSteps{*nx, *ny};
+}
+
 }  // namespace
 
 Kernel cut_kernel(const Kernel& big, int mx, int my) {
@@ -51,15 +76,24 @@ std::optional<Kernel> KernelLibrary::cut_kept(Component c, const Grid& grid,
       return cut_kernel(entries_.front().kernel, grid.mx, grid.my);
     }
     // A grid that outgrew its kernel is a growing patch: a quarter more than asked in each
-    // direction, so that it does not tabulate again at every step. A first request gets its
-    // own size: most grids never grow (a module-3 sequence), and the closed forms are the
-    // set-up.
-    big.mx = std::max(grid.mx + (grid.mx + 3) / 4, e.kernel.mx());
-    big.my = std::max(grid.my + (grid.my + 3) / 4, e.kernel.my());
+    // direction and half as much again as kept in a direction it outgrew, so that a patch
+    // growing case by case (a wheel/rail sweep: 24 → 32 → 48 elements) tabulates a few times,
+    // not at every step.
+    const auto grown = [](int asked, int kept) {
+      const int margin = asked + (asked + 3) / 4;
+      return asked > kept ? std::max(margin, kept + kept / 2) : std::max(margin, kept);
+    };
+    big.mx = grown(grid.mx, e.kernel.mx());
+    big.my = grown(grid.my, e.kernel.my());
     kept_bytes_ -= bytes_of(it->kernel);
     entries_.erase(it);  // too small: replaced by a larger one
-    break;
+    return std::nullopt;
   }
+  // A first request gets its own size and one element more each way, for the rolling step
+  // of one element that steady rolling reads from it (kernels(): whole steps): most grids never
+  // grow (a module-3 sequence), and the closed forms are the set-up.
+  big.mx = grid.mx + 1;
+  big.my = grid.my + 1;
   return std::nullopt;
 }
 
@@ -72,6 +106,25 @@ std::vector<Kernel> KernelLibrary::kernels(const std::vector<Component>& cs, con
   if (m.viscoelastic() || m.table) {
     computed_ += cs.size();
     return make_kernels(cs, grid, m, shift_x, shift_y);
+  }
+  // Steady rolling's shift of one element: the unshifted kernels one element wider, read one
+  // offset on, instead of a second tabulation on a lattice that lacks the unshifted one's mirror
+  // symmetry (twice its logarithms).
+  if (const std::optional<WholeSteps> w = whole_steps(grid, m, shift_x, shift_y)) {
+    Grid wider = grid;
+    wider.mx += std::abs(w->nx);
+    wider.my += std::abs(w->ny);
+    std::vector<Kernel> plain = kernels(cs, wider, m, 0.0, 0.0);
+    std::vector<Kernel> shifted;
+    shifted.reserve(cs.size());
+    for (const Kernel& k : plain) {
+      Kernel cut(grid.mx, grid.my);
+      for (int diy = -(grid.my - 1); diy <= grid.my - 1; ++diy)
+        for (int dix = -(grid.mx - 1); dix <= grid.mx - 1; ++dix)
+          cut.at(dix, diy) = k.at(dix + w->nx, diy + w->ny);
+      shifted.push_back(std::move(cut));
+    }
+    return shifted;
   }
   std::vector<std::optional<Kernel>> out(cs.size());
   // Missing components, grouped by the size they are tabulated at (usually one group): each

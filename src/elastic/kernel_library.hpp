@@ -5,7 +5,10 @@
 // corner abscissae, the same operations). Wheel/rail patches change their MX, MY from case to
 // case and within the vertical-force iteration; cutting the kernel out of a kept larger one
 // replaces the closed forms (logarithms in long double, most of the set-up time) by a copy.
-// A kernel is tabulated at the grid's own size first and with a margin once a grid outgrew it.
+// A kernel is tabulated at the grid's own size (one element more each way) first and with a
+// margin once a grid outgrew it. A rolling shift of whole elements (steady rolling's step of
+// one element) is no tabulation of its own: it is the unshifted kernel read that many offsets
+// on, bit for bit.
 
 #include <array>
 #include <cstddef>

@@ -45,27 +45,66 @@ TEST(KernelLibrary, SeveralComponentsAtOnceEqualTheirKernels) {
 TEST(KernelLibrary, TabulatesOnlyWhenAGridOutgrowsTheKeptKernel) {
   const CombinedMaterial m{.g = 1.0, .nu = 0.3, .k = 0.0};
   KernelLibrary lib;
-  lib.kernel(Component::nn, grid(16, 16), m);  // keeps 16 × 16: its own size first
+  lib.kernel(Component::nn, grid(16, 16), m);  // keeps 17 × 17: its own size and one more
   EXPECT_EQ(lib.computed(), 1u);
   lib.kernel(Component::nn, grid(16, 8), m);  // inside: cut
   lib.kernel(Component::nn, grid(4, 4), m);
+  lib.kernel(Component::nn, grid(17, 17), m);  // a rolling step's one element more
   EXPECT_EQ(lib.computed(), 1u);
-  lib.kernel(Component::nn, grid(17, 8), m);  // outgrows in x: keeps 22 × 16 (a margin)
+  lib.kernel(Component::nn, grid(18, 8), m);  // outgrows in x: keeps 25 × 17 (1.5 × 17)
   EXPECT_EQ(lib.computed(), 2u);
-  lib.kernel(Component::nn, grid(22, 16), m);  // inside the margin: cut
+  lib.kernel(Component::nn, grid(25, 17), m);  // inside the margin: cut
   EXPECT_EQ(lib.computed(), 2u);
-  lib.kernel(Component::nn, grid(23, 8), m);  // outgrows again
+  lib.kernel(Component::nn, grid(26, 8), m);  // outgrows again: 37 × 17
   EXPECT_EQ(lib.computed(), 3u);
+  lib.kernel(Component::nn, grid(37, 17), m);
+  EXPECT_EQ(lib.computed(), 3u);
+  lib.kernel(Component::nn, grid(30, 18), m);  // outgrows in y: 38 (30 + ¼) × 25 (1.5 × 17)
+  EXPECT_EQ(lib.computed(), 4u);
+  lib.kernel(Component::nn, grid(38, 25), m);
+  EXPECT_EQ(lib.computed(), 4u);
   lib.kernel(Component::yy, grid(4, 4), m);  // another component, element size or material
   lib.kernel(Component::nn, {.mx = 4, .my = 4, .xl = 0, .yl = 0, .dx = 0.1, .dy = 0.25}, m);
   lib.kernel(Component::nn, grid(4, 4), {.g = 2.0, .nu = 0.3, .k = 0.0});
-  EXPECT_EQ(lib.computed(), 6u);
+  EXPECT_EQ(lib.computed(), 7u);
   // A budget too small to keep anything: every request tabulates, results unchanged.
   KernelLibrary none(16);
   none.kernel(Component::nn, grid(8, 8), m);
   EXPECT_EQ(none.kernel(Component::nn, grid(8, 8), m).data(),
             make_kernel(Component::nn, grid(8, 8), m).data());
   EXPECT_EQ(none.computed(), 2u);
+}
+
+TEST(KernelLibrary, ShiftsOfWholeElementsAreTheUnshiftedKernelReadOffsetsOn) {
+  // Steady rolling shifts by one element: the kernels come from the unshifted ones, bit for
+  // bit equal to a tabulation on the shifted lattice, with an interfacial layer's compliance
+  // at the element the shifted point lands in; a shift of part of an element is tabulated.
+  const CombinedMaterial steel{.g = 82000.0, .nu = 0.28, .k = 0.0};
+  CombinedMaterial layered = steel;
+  layered.layer_compliance = 2e-6;
+  layered.normal_layer_compliance = 1e-6;
+  for (const CombinedMaterial& m : {steel, layered}) {
+    for (double d : {0.5, 0.2, 0.1, 1.0 / 3.0}) {
+      const Grid g{.mx = 24, .my = 40, .xl = 0, .yl = 0, .dx = d, .dy = 0.7 * d};
+      KernelLibrary lib;
+      const std::vector<Component> cs{Component::xx, Component::xy, Component::yy, Component::nn};
+      lib.kernels(cs, g, m);  // the unshifted ones kept
+      const std::size_t tabulated = lib.computed();
+      for (auto [sx, sy] :
+           {std::pair{1.0, 0.0}, std::pair{-1.0, 0.0}, std::pair{2.0, 1.0}, std::pair{0.0, -1.0}}) {
+        const std::vector<Kernel> k = lib.kernels(cs, g, m, sx * g.dx, sy * g.dy);
+        for (std::size_t q = 0; q < cs.size(); ++q)
+          EXPECT_EQ(k[q].data(), make_kernel(cs[q], g, m, sx * g.dx, sy * g.dy).data())
+              << static_cast<int>(cs[q]) << " dx " << d << " shift " << sx << "," << sy;
+      }
+      // Within the unshifted kernels' margin after the first outgrowing request.
+      EXPECT_LE(lib.computed(), tabulated + cs.size());
+      const std::size_t before_part = lib.computed();
+      const Kernel part = lib.kernel(Component::xx, g, m, 0.5 * g.dx, 0.0);
+      EXPECT_EQ(part.data(), make_kernel(Component::xx, g, m, 0.5 * g.dx, 0.0).data());
+      EXPECT_EQ(lib.computed(), before_part + 1);
+    }
+  }
 }
 
 }  // namespace
