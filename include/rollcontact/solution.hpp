@@ -181,6 +181,9 @@ struct Solution {
   std::vector<double> px, py;      ///< tangential tractions [N/mm²]
   std::vector<double> un, ux, uy;  ///< displacement differences [mm]
   std::vector<double> sx, sy;      ///< slip (velocity / δq, or distance for T=1)
+  /// The rigid slip the tangential problem posed per element: W/δq [-] (T=2,3; with the spin
+  /// taken half-way along the step, FACPHI) or the rigid shift [mm] (T=1); empty for T=0.
+  std::vector<double> wx, wy;
   /// Coefficient of friction per element in effect (velocity-dependent laws only, else empty).
   std::vector<double> mu;
   /// Interfacial layer with plasticity (M=4, TAU_C0 > 0), else empty: the yield limit τ_c

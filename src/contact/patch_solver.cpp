@@ -383,6 +383,19 @@ class CaseSolver {
   tangential::TangentialResult adopt_friction_iteration(contact::FrictionIterationOutcome& r);
   /// 1 for the elements in contact (p_n > 0).
   std::vector<char> contact_set() const;
+  /// Keeps the rigid shift per step W [mm] of the problem posed as the solution's rigid slip
+  /// W/δq (T=1: the shift itself), for the O = 5 element tables.
+  void record_rigid_slip(const Field& wx, const Field& wy) {
+    const bool rolling = problem_.tangential.kind == model::TangentialKind::TransientRolling ||
+                         problem_.tangential.kind == model::TangentialKind::SteadyRolling;
+    const double per = rolling && sol_.kinematics.dq > 0.0 ? 1.0 / sol_.kinematics.dq : 1.0;
+    sol_.wx.resize(wx.size());
+    sol_.wy.resize(wy.size());
+    for (std::size_t i = 0; i < wx.size(); ++i) {
+      sol_.wx[i] = per * wx[i];
+      sol_.wy[i] = per * wy[i];
+    }
+  }
   void assemble_slip_at_zero_traction(tangential::TangentialSystem& sys, double cksi, double ceta,
                                       double cphi);
   void add_unshifted_displacement(const Field& px, const Field& py, const Field& pn, Field& ux,
@@ -608,6 +621,14 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
   c.creepages = {cksi, ceta, cphi};
   const simplified::RigidShiftParts shift =
       simplified::rigid_shift_parts(grid_, problem_, sol_.kinematics, c.creepages);
+  {
+    Field wx = shift.wx, wy = shift.wy;
+    for (std::size_t i = 0; i < wx.size(); ++i) {
+      wx[i] += shift.spin_x[i];
+      wy[i] += shift.spin_y[i];
+    }
+    record_rigid_slip(wx, wy);
+  }
   c.shift = &shift;
   c.steady = kind == model::TangentialKind::SteadyRolling;
   c.chi = sol_.kinematics.chi;
@@ -677,6 +698,7 @@ void CaseSolver::assemble_slip_at_zero_traction(tangential::TangentialSystem& sy
   const RigidShift w = rigid_shift(grid_, problem_, sol_.kinematics, cksi, ceta, cphi);
   sys.bx = w.wx;
   sys.by = w.wy;
+  record_rigid_slip(w.wx, w.wy);
   if (coupled_) {
     // Tangential displacement per step due to the pressure (C_tn, or (C − C′)_tn when steady).
     Field ux(n), uy(n);

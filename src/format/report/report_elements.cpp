@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <ostream>
+#include <span>
 #include <string>
 
 #include "format/report/number_format.hpp"
@@ -12,7 +13,7 @@
 namespace rollcontact::format::report {
 namespace {
 
-double at(const std::vector<double>& f, std::size_t i) {
+double at(std::span<const double> f, std::size_t i) {
   return i < f.size() ? f[i] : 0.0;
 }
 
@@ -53,30 +54,15 @@ void write_header(std::ostream& os, int t, int h) {
   line(os, columns + (h >= 1 ? " TEMP1      TEMP2" : "RIGID SLIP(X, Y)"));
 }
 
-}  // namespace
-
-void write_element_table(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
-  const auto& d = problem.digits;
+/// The rows: every contact element (O ≥ 6: every element) by grid row.
+void write_rows(std::ostream& os, const ElementTableInputs& in, const Solution& solution) {
   const Grid& g = solution.grid;
-  if (solution.state.size() != g.size()) return;
-  write_header(os, d.t, d.h);
-
-  const double pen = effective_approach(problem, solution);
-  const double mu = static_friction(problem.friction);
-  const EffectiveKinematics ek = effective_kinematics(solution);
-  const EffectiveCreepages c = printed_creepages(problem, solution);
-  const auto& kin = problem.kinematics;
-  const bool rolling = d.t >= 2;
-  // Rigid slip (T=2,3) or shift (T=1) per element, physics.md §5; E=2/E=3 drop a spin term.
-  const double offset = rolling ? ek.dq * kin.facphi : 0.0;
-  const bool spin_x = d.e != 3, spin_y = d.e != 2;
-
   for (int iy = 0; iy < g.my; ++iy) {
     bool row_started = false;
     for (int ix = 0; ix < g.mx; ++ix) {
       const std::size_t i = g.index(ix, iy);
       const ElementState state = solution.state[i];
-      if (state == ElementState::Exterior && d.o < 6) continue;
+      if (state == ElementState::Exterior && in.o < 6) continue;
       if (!row_started) {
         line(os, "");
         line(os, " Y = " + fortran_g(g.y_centre(iy), 12, 4) + " ROW" + fortran_i(iy + 1, 3) +
@@ -84,33 +70,71 @@ void write_element_table(std::ostream& os, const CaseRecord& problem, const Solu
         line(os, "");
         row_started = true;
       }
-      const double x = g.x_centre(ix), y = g.y_centre(iy);
+      const double x = g.x_centre(ix);
       const double pn = at(solution.pn, i), px = at(solution.px, i), py = at(solution.py, i);
-      const double h_pen = at(solution.h, i) - pen;
+      const double h_pen = at(solution.h, i) - in.pen;
       const double pt_abs = std::hypot(px, py);
       const double pt_arg = std::atan2(py, px) * 180.0 / std::numbers::pi;
-      if (d.t == 0) {
+      if (in.t == 0) {
         line(os, " " + fortran_g(x, 12, 4) + fortran_g(h_pen, 12, 4) + fortran_g(pn, 12, 4) +
                      fortran_g(pt_abs, 12, 4) + fortran_f(pt_arg, 10, 1));
         continue;
       }
       // Traction bound mu p_n: exact for Coulomb friction; for slip-dependent laws the Solution
       // has no local mu, and |p_t| equals the bound in slip.
-      double trcbnd = mu * pn;
-      if (problem.friction.law != 0 && state == ElementState::Slip) trcbnd = pt_abs;
+      double trcbnd = in.mu * pn;
+      if (in.friction_law != 0 && state == ElementState::Slip) trcbnd = pt_abs;
       const double s_abs =
           state == ElementState::Slip ? std::hypot(at(solution.sx, i), at(solution.sy, i)) : 0.0;
-      const double wx = c.x - (spin_x ? c.phi * (y - kin.spinyo + std::sin(ek.chi) * offset) : 0.0);
-      const double wy = c.y + (spin_y ? c.phi * (x - kin.spinxo + std::cos(ek.chi) * offset) : 0.0);
       // H >= 1: the surface temperatures TEMP1, TEMP2 [°C] replace the rigid slip pair.
-      const bool heat = d.h >= 1 && solution.temp1.size() == g.size();
-      const double last1 = heat ? solution.temp1[i] : wx, last2 = heat ? solution.temp2[i] : wy;
+      const bool heat = in.h >= 1 && solution.temp1.size() == g.size();
+      const double last1 = heat ? solution.temp1[i] : at(in.wx, i);
+      const double last2 = heat ? solution.temp2[i] : at(in.wy, i);
       line(os, " " + fortran_g(x, 12, 4) + fortran_g(h_pen, 11, 3) + fortran_g(pn, 11, 3) +
                    fortran_g(trcbnd, 11, 3) + fortran_g(pt_abs, 11, 3) + fortran_f(pt_arg, 10, 1) +
                    "  " + fortran_g(s_abs, 11, 3) + fortran_g(last1, 11, 3) +
                    fortran_g(last2, 11, 3));
     }
   }
+}
+
+}  // namespace
+
+void write_element_table(std::ostream& os, const ElementTableInputs& in, const Solution& solution) {
+  if (solution.state.size() != solution.grid.size()) return;
+  write_header(os, in.t, in.h);
+  write_rows(os, in, solution);
+}
+
+void write_element_table(std::ostream& os, const CaseRecord& problem, const Solution& solution) {
+  const auto& d = problem.digits;
+  const Grid& g = solution.grid;
+  const EffectiveKinematics ek = effective_kinematics(solution);
+  const EffectiveCreepages c = printed_creepages(problem, solution);
+  const auto& kin = problem.kinematics;
+  const bool rolling = d.t >= 2;
+  // Rigid slip (T=2,3) or shift (T=1) per element, physics.md §5, from the printed creepages;
+  // E=2/E=3 drop a spin term.
+  const double offset = rolling ? ek.dq * kin.facphi : 0.0;
+  const bool spin_x = d.e != 3, spin_y = d.e != 2;
+  std::vector<double> wx(g.size(), 0.0), wy(g.size(), 0.0);
+  for (int iy = 0; iy < g.my; ++iy)
+    for (int ix = 0; ix < g.mx; ++ix) {
+      const std::size_t i = g.index(ix, iy);
+      const double x = g.x_centre(ix), y = g.y_centre(iy);
+      wx[i] = c.x - (spin_x ? c.phi * (y - kin.spinyo + std::sin(ek.chi) * offset) : 0.0);
+      wy[i] = c.y + (spin_y ? c.phi * (x - kin.spinxo + std::cos(ek.chi) * offset) : 0.0);
+    }
+  ElementTableInputs in;
+  in.t = d.t;
+  in.h = d.h;
+  in.o = d.o;
+  in.pen = effective_approach(problem, solution);
+  in.mu = static_friction(problem.friction);
+  in.friction_law = problem.friction.law;
+  in.wx = wx;
+  in.wy = wy;
+  write_element_table(os, in, solution);
 }
 
 }  // namespace rollcontact::format::report

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <iosfwd>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -45,5 +46,15 @@ void write_statistics(std::ostream& os, const CaseRecord& problem, const Solutio
 
 /// The O = 5 table of quantities per contact element, §3.6.
 void write_element_table(std::ostream& os, const CaseRecord& problem, const Solution& solution);
+/// What the O = 5 element table needs beside the solution: control digits T, H, O, the approach
+/// [mm], the friction coefficient and law, and the rigid slip per element (W/δq, T=1: shift).
+struct ElementTableInputs {
+  int t = 0, h = 0, o = 0;
+  double pen = 0.0;
+  double mu = 0.0;
+  int friction_law = 0;
+  std::span<const double> wx, wy;
+};
+void write_element_table(std::ostream& os, const ElementTableInputs& in, const Solution& solution);
 
 }  // namespace rollcontact::format::report

@@ -158,6 +158,20 @@ void write_patch(std::ostream& os, const WheelRailRecord& r, const CaseRecord& i
     write_element_division(os, w.solution, d.t, w.chi_rad);
     if (w.conformal.active) report::write_curved_reference(os, w.conformal);
   }
+  if (d.o >= 5) {
+    // The patch's quantities per element, as module 3's table: its approach, its coefficient
+    // of friction and the rigid slip its tangential problem posed.
+    report::ElementTableInputs in;
+    in.t = d.t;
+    in.h = d.h;
+    in.o = d.o;
+    in.pen = w.solution.totals.pen;
+    in.mu = w.friction.static_coefficient;
+    in.friction_law = r.friction.law;
+    in.wx = w.solution.wx;
+    in.wy = w.solution.wy;
+    report::write_element_table(os, in, w.solution);
+  }
   // S ≥ 1: the subsurface stress summaries of the patch, in its own coordinates.
   if (d.s >= 1) {
     CaseRecord with_points = identity;

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -174,6 +175,88 @@ TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
   const double mn = std::abs(w.solution.totals.mz);
   EXPECT_NEAR(s.moment_tr.x, d.y * f.z - d.z * f.y, mn + 1e-6 * std::abs(d.y * f.z));
   EXPECT_NEAR(s.moment_tr.z, d.x * f.y - d.y * f.x, mn + 1e-6 * std::abs(d.y * f.x));
+  fs::remove_all(dir);
+}
+
+/// O = 5 prints each patch's element table as module 3 does (spec/outputs.md §3.6, §3.8): one
+/// line per contact element, the pressures summing to FN, slip only where the element slides,
+/// and the rigid slip W/δq of the patch's creepages: ξ − φ·y along a row's elements and η + φ·x
+/// across them, so that its x- and y-differences give the spin.
+TEST(WheelRailReportLayout, OutputFivePrintsEachPatchsElementTable) {
+  REQUIRE_EXAMPLES();
+  const fs::path dir = fs::temp_directory_path() / "rollcontact_layout_elements";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const char* name : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
+    fs::copy_file(examples_dir / name, dir / name);
+  std::ifstream in(examples_dir / "mbench_a22_right.inp");
+  std::string text, l;
+  for (int n = 1; std::getline(in, l) && n <= 26; ++n)
+    text += (n == 15 ? std::string(" 0000521    H-G-I-A-O-W-R") : l) + "\n";
+  std::ofstream(dir / "case.inp") << text << " 0 MODULE\n";
+  const RunResult r = run_input_file(dir / "case.inp", RunOptions{});
+  ASSERT_EQ(r.cases.size(), 1U);
+  ASSERT_TRUE(r.cases[0].solved) << r.cases[0].error;
+  ASSERT_EQ(r.cases[0].wheelrail.patches.size(), 1U);
+  const WheelRailPatch& w = r.cases[0].wheelrail.patches[0];
+
+  struct Row {
+    double y, x, pn, trcbnd, pt, s, wx, wy;
+  };
+  std::vector<Row> rows;
+  std::ifstream out(dir / "case.out");
+  bool table = false;
+  double y = 0.0;
+  while (std::getline(out, l)) {
+    if (l.rfind(" QUANTITIES DISTRIBUTED OVER THE CONTACT AREA:", 0) == 0) table = true;
+    if (!table) continue;
+    if (l.rfind(" Y = ", 0) == 0) {
+      y = std::stod(l.substr(5, 12));
+      continue;
+    }
+    std::istringstream v(l);
+    Row e{y, 0, 0, 0, 0, 0, 0, 0};
+    double h_pen = 0.0, arg = 0.0;
+    if (v >> e.x >> h_pen >> e.pn >> e.trcbnd >> e.pt >> arg >> e.s >> e.wx >> e.wy)
+      rows.push_back(e);
+  }
+  const Statistics& st = w.solution.statistics;
+  ASSERT_EQ(rows.size(), static_cast<std::size_t>(st.ncon));
+  const double area = w.solution.grid.element_area();
+  double fn = 0.0;
+  int sliding = 0;
+  for (const Row& e : rows) {
+    fn += e.pn * area;
+    if (e.s > 0.0) {
+      ++sliding;
+      EXPECT_NEAR(e.pt, e.trcbnd, 6e-3 * e.trcbnd + 1e-3);  // three digits printed
+    } else {
+      EXPECT_LE(e.pt, e.trcbnd * (1.0 + 6e-3) + 1e-3);
+    }
+  }
+  EXPECT_EQ(sliding, st.nslip);
+  EXPECT_NEAR(fn, w.solution.totals.fn, 2e-3 * w.solution.totals.fn);
+  // The spin from the rigid slip's differences: −Δw_x/Δy between the first and last row and
+  // Δw_y/Δx along the longest row.
+  const Row& first = rows.front();
+  const Row& last = rows.back();
+  ASSERT_GT(last.y - first.y, 2.0);
+  const double phi = w.phi_per_mm;
+  ASSERT_GT(std::abs(phi), 1e-6);
+  EXPECT_NEAR(-(last.wx - first.wx) / (last.y - first.y), phi, 0.02 * std::abs(phi));
+  std::map<double, std::pair<Row, Row>> ends;  // per row: first and last element
+  for (const Row& e : rows) {
+    auto [it, fresh] = ends.try_emplace(e.y, e, e);
+    if (!fresh) it->second.second = e;
+  }
+  const auto widest = std::max_element(ends.begin(), ends.end(), [](const auto& a, const auto& b) {
+    return a.second.second.x - a.second.first.x < b.second.second.x - b.second.first.x;
+  });
+  const Row& a = widest->second.first;
+  const Row& b = widest->second.second;
+  ASSERT_GT(b.x - a.x, 1.0);
+  EXPECT_NEAR((b.wy - a.wy) / (b.x - a.x), phi, 0.02 * std::abs(phi));
+  EXPECT_NEAR(a.wx, b.wx, 1e-3 * std::abs(a.wx) + 1e-9);  // ξ − φ·y: the same along a row
   fs::remove_all(dir);
 }
 
