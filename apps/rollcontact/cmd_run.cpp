@@ -101,7 +101,7 @@ batch::RunOptions solver_run_options(const RunSettings& settings) {
 std::size_t refused_as_unvalidated(const batch::RunResult& result) {
   std::size_t refused = 0;
   for (const CaseOutcome& c : result.cases)
-    if (!c.solved && c.error.find("not validated against CONTACT") != std::string::npos) ++refused;
+    if (!c.solved && c.refused_unvalidated) ++refused;
   return refused;
 }
 

@@ -109,4 +109,12 @@ class NotSupportedError : public Error {
   using Error::Error;
 };
 
+/// A feature implemented but known to give results that differ from CONTACT's reference
+/// outputs, refused because the problem asked for validated results only
+/// (model::WheelRailProblem::validated_only); solved with a warning on request.
+class NotValidatedError : public NotSupportedError {
+ public:
+  using NotSupportedError::NotSupportedError;
+};
+
 }  // namespace rollcontact

@@ -116,6 +116,9 @@ struct WheelRailSolution {
   /// Wall time of this case [s]: profile placement, contact search and patch set-up (geometry)
   /// and the patch solves, over all vertical-force iterates. Not part of the result files.
   double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
+  /// The part of patch_solve_seconds spent setting the patch problems up: discretisation,
+  /// influence kernels, operators, FFT plans, preconditioners [s] (`run --timing`'s set-up).
+  double patch_setup_seconds = 0.0;
 };
 
 /// Solves wheel/rail cases one after another, keeping the profile curves while the profiles stay

@@ -36,7 +36,12 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 /// Adds a solved case's wall time to the split: its set-up as the solver measured it, the rest
 /// as solve time.
 void add_case_time(const CaseOutcome& c, double seconds, RunTiming& timing) {
-  const double setup = c.solved && !c.wheel_rail ? c.solution.solver.setup_seconds : 0.0;
+  // Wheel/rail: the profiles' placement, contact search and patch set-up of every iterate, and
+  // the patch problems' own set-up (kernels, operators, plans).
+  const double setup = !c.solved ? 0.0
+                       : c.wheel_rail
+                           ? c.wheelrail.geometry_seconds + c.wheelrail.patch_setup_seconds
+                           : c.solution.solver.setup_seconds;
   timing.setup += setup;
   timing.solve += seconds - setup;
 }
@@ -112,6 +117,9 @@ CaseOutcome solve_module1(const format::WheelRailRecord& record, RunState& state
     outcome.solved = true;
     auto& warnings = outcome.wheelrail.warnings;
     warnings.insert(warnings.begin(), record.source.warnings.begin(), record.source.warnings.end());
+  } catch (const NotValidatedError& e) {
+    outcome.error = e.what();
+    outcome.refused_unvalidated = true;
   } catch (const NotSupportedError& e) {
     outcome.error = e.what();
   } catch (const GeometryError& e) {

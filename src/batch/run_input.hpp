@@ -29,7 +29,10 @@ struct CaseOutcome {
   Solution solution;            ///< valid when solved (module 3)
   WheelRailSolution wheelrail;  ///< valid when solved (module 1)
   std::string error;            ///< non-empty for "error" (not supported, inadmissible data)
-  bool skipped = false;         ///< R = 2, 3: read but not solved
+  /// The error is a refusal of a feature not validated against CONTACT (NotValidatedError):
+  /// `rollcontact run --unvalidated` would solve the case with a warning.
+  bool refused_unvalidated = false;
+  bool skipped = false;  ///< R = 2, 3: read but not solved
 };
 
 struct RunOptions {

@@ -52,7 +52,7 @@ void vary_friction(const model::WheelRailProblem& p, PatchSetup& setup) {
 void unvalidated(const model::WheelRailProblem& p, const std::string& what,
                  std::vector<std::string>& warnings) {
   if (p.validated_only)
-    throw NotSupportedError("not supported yet: module 1 " + what +
+    throw NotValidatedError("not supported yet: module 1 " + what +
                             " (not validated against CONTACT; solved with a warning on request)");
   const std::string warning = "not validated against CONTACT: " + what;
   if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end())
@@ -155,6 +155,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
                   out.warnings);
     Solution sol = solver_for(k).solve(setup.problem);
     patch_solve_seconds += since(start);
+    patch_setup_seconds += sol.solver.setup_seconds;
     start = Clock::now();
     if (!sol.solver.converged) {
       out.converged = false;
@@ -300,7 +301,7 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
                 "edges its location differs from CONTACT's by up to 0.08 mm; wheelflat: 15 of "
                 "26 cases beyond the 5e-3 mm tolerance)",
                 before);
-  impl_->geometry_seconds = impl_->patch_solve_seconds = 0.0;
+  impl_->geometry_seconds = impl_->patch_solve_seconds = impl_->patch_setup_seconds = 0.0;
   impl_->last_solve_turned = false;
   if (problem.vertical == model::VerticalLoading::Force && !(problem.motion.fz_N >= 1e-9)) {
     // CONTACT's early return (spec/wheelrail-advanced.md §6.3): a wheel without load is not in
@@ -340,6 +341,7 @@ WheelRailSolution WheelsetSolver::solve(const model::WheelRailProblem& problem) 
   }
   result.geometry_seconds = impl_->geometry_seconds;
   result.patch_solve_seconds = impl_->patch_solve_seconds;
+  result.patch_setup_seconds = impl_->patch_setup_seconds;
   return result;
 }
 

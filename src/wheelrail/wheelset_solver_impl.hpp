@@ -167,7 +167,7 @@ struct WheelsetSolver::Impl {
   bool new_step_pending = false;
 
   /// Wall time of the current case [s] (see WheelRailSolution).
-  double geometry_seconds = 0.0, patch_solve_seconds = 0.0;
+  double geometry_seconds = 0.0, patch_solve_seconds = 0.0, patch_setup_seconds = 0.0;
 };
 
 }  // namespace rollcontact

@@ -82,11 +82,11 @@ TEST(ApproximateWheelRail, CasesThatDifferAreRefused) {
   // Case 1: KPEC where a second lobe of the gap lies outside the equivalent ellipse.
   EXPECT_THROW((void)solver.solve(
                    format::to_wheelrail_problem(std::get<format::WheelRailRecord>(cases.at(0)))),
-               NotSupportedError);
+               NotValidatedError);
   // Case 6: ANALYN on a patch combined from two interpenetration regions.
   EXPECT_THROW((void)solver.solve(
                    format::to_wheelrail_problem(std::get<format::WheelRailRecord>(cases.at(5)))),
-               NotSupportedError);
+               NotValidatedError);
   // Through the API without `validated_only` both are solved (not yet CONTACT's numbers).
   model::WheelRailProblem p =
       format::to_wheelrail_problem(std::get<format::WheelRailRecord>(cases.at(5)));
