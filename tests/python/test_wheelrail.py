@@ -33,6 +33,10 @@ def test_manchester_benchmark_case_from_python(cli, tmp_path):
     assert patch["pn"].shape == (g["my"], g["mx"])
     assert patch["pn"].sum() * g["dx"] * g["dy"] == pytest.approx(patch["fn"], rel=1e-9)
     assert np.isfinite(patch["contact_angle"])
+    # The rigid slip the patch's problem posed: ξ − φ·y and η + φ·x up to the spin's offset.
+    x, y = np.meshgrid(g["x"], g["y"])
+    assert np.ptp(patch["wx"] + patch["phi"] * y) == pytest.approx(0.0, abs=1e-12)
+    assert np.ptp(patch["wy"] - patch["phi"] * x) == pytest.approx(0.0, abs=1e-12)
 
 
 def test_placed_profiles_touch_at_the_contact(tmp_path):

@@ -120,10 +120,13 @@ py::dict solution_to_dict(Solution solution) {
                              {"un", &s.un},
                              {"h", &s.h}})
     d[name] = field_view(g, *field, owner);
-  // Fields that only some physics has (present as arrays when the solver made them): the local
+  // Fields that only some physics has (present as arrays when the solver made them): the rigid
+  // slip the tangential problem posed (W/δq; T=1: the shift [mm]), the local
   // friction coefficient (velocity- and temperature-dependent laws), the interfacial layer's
   // yield limit and plastic displacement (M=4 with plasticity), surface temperatures (H >= 1).
-  for (auto [name, field] : {std::pair{"mu", &s.mu},
+  for (auto [name, field] : {std::pair{"wx", &s.wx},
+                             {"wy", &s.wy},
+                             {"mu", &s.mu},
                              {"yield_limit", &s.yield_limit},
                              {"plastic_x", &s.plastic_x},
                              {"plastic_y", &s.plastic_y},
