@@ -1216,6 +1216,13 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
     // A rough solve only informs the next step (SolverOptions::rough_tolerance): no
     // displacements beyond the normal solve's own, no elastic energy.
     if (normal_un_.size() == n) s.un = std::move(normal_un_);
+  } else if (tops_ != nullptr && !coupled_ && normal_un_.size() == n) {
+    // Without couplings C is block-diagonal: u_n is the normal solve's, u_t = C_tt·p_t (two
+    // transform pairs instead of the 3×3 product's three).
+    s.un = std::move(normal_un_);
+    const double* in[2] = {s.px.data(), s.py.data()};
+    double* out[2] = {s.ux.data(), s.uy.data()};
+    tops_->tangential_product().apply(in, out);
   } else if (tops_ != nullptr) {
     const double* in[3] = {s.px.data(), s.py.data(), s.pn.data()};
     double* out[3] = {s.ux.data(), s.uy.data(), s.un.data()};

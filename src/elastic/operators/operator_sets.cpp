@@ -86,6 +86,17 @@ BlockConvolution& TangentialOperatorSet::full_product() {
   return *full_;
 }
 
+BlockConvolution& TangentialOperatorSet::tangential_product() {
+  if (!steady()) return *a;  // A = C_tt
+  if (!plain_tt_) {
+    plain_tt_ = std::make_unique<BlockConvolution>(
+        2, 2, std::vector<const Kernel*>{&c_xx, &c_xy, &c_xy, &c_yy}, fft.backend, fft.planning,
+        &spectra);
+    plain_tt_->set_interaction(interaction);
+  }
+  return *plain_tt_;
+}
+
 namespace {
 
 /// Steady rolling: A = C − C′ with C′ the coefficients seen from one step downstream.

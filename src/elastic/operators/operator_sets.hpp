@@ -71,9 +71,13 @@ struct TangentialOperatorSet {
   bool coupled() const noexcept { return is_coupled(material); }
   /// The plain 3×3 C, with the set's interaction.
   BlockConvolution& full_product();
+  /// The plain 2×2 C_tt, with the set's interaction: `a` itself unless steady rolling, else
+  /// made on first use. Without couplings (K = 0) the tangential displacements are this product
+  /// alone, and the normal ones are the normal solve's.
+  BlockConvolution& tangential_product();
 
  private:
-  std::unique_ptr<BlockConvolution> full_;
+  std::unique_ptr<BlockConvolution> full_, plain_tt_;
 };
 /// What a tangential set depends on besides grid and material: the kind of loading (None is
 /// treated as steady rolling, as the solver never asks for it) and the rolling step [mm], zero

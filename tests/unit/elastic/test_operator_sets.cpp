@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -96,6 +97,37 @@ TEST(OperatorSets, TransientRollingSeesThePreviousDisplacementOneStepAway) {
       EXPECT_NEAR(set.prev_xn.at(dix, diy), set.c_xn.at(dix + 1, diy),
                   1e-12 * std::abs(set.c_xx.at(0, 0)));
     }
+}
+
+// The tangential block of C alone (what the energy needs without couplings) is the 3×3
+// product's tangential rows with p_n = 0: for steady rolling a product of its own, for the
+// other kinds A itself.
+TEST(OperatorSets, TangentialProductIsTheTangentialBlockOfC) {
+  const Grid grid = small_grid();
+  const CombinedMaterial m = combine_materials(0.28, 0.28, 8.0e4, 8.0e4);
+  for (model::TangentialKind kind :
+       {model::TangentialKind::SteadyRolling, model::TangentialKind::TransientRolling}) {
+    TangentialOperatorSet set;
+    assemble_tangential(set, grid, m, kind, grid.dx, 0.0, {});
+    const std::size_t n = grid.size();
+    const std::vector<double> px = test_support::random_field(n, 21),
+                              py = test_support::random_field(n, 22), pn(n, 0.0);
+    std::vector<double> ux(n), uy(n), fx(n), fy(n), fn(n);
+    const double* in2[2] = {px.data(), py.data()};
+    double* out2[2] = {ux.data(), uy.data()};
+    set.tangential_product().apply(in2, out2);
+    const double* in3[3] = {px.data(), py.data(), pn.data()};
+    double* out3[3] = {fx.data(), fy.data(), fn.data()};
+    set.full_product().apply(in3, out3);
+    double scale = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      scale = std::max({scale, std::abs(fx[i]), std::abs(fy[i])});
+      worst = std::max({worst, std::abs(ux[i] - fx[i]), std::abs(uy[i] - fy[i])});
+    }
+    EXPECT_GT(scale, 0.0);
+    EXPECT_LT(worst, 1e-13 * scale) << static_cast<int>(kind);
+    EXPECT_EQ(&set.tangential_product() == set.a.get(), !set.steady());
+  }
 }
 
 }  // namespace
