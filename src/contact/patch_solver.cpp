@@ -422,6 +422,8 @@ class CaseSolver {
   PreviousFields prev_;
   /// The last solve's pressure on this grid (SequenceLink::normal_from_previous), or empty.
   Field latest_pn_;
+  /// latest_pn_ is, element for element, the pressure of st_.last_normal (whose un = A·pn).
+  bool latest_is_last_normal_ = false;
   /// A·p_n of the normal answer (NormCG's final product), the displacement compute_totals()
   /// would compute again for a patch without tangential operators; empty when not known.
   Field normal_un_;
@@ -474,11 +476,15 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   // or geometric estimate.
   Field start;
   const Field* initial = nullptr;
+  const Field* initial_un = nullptr;  // A·initial when known (no starting product)
   if (!sol_.pn.empty()) {
     initial = &sol_.pn;
   } else if (problem_.sequence.normal_from_previous && prev_.present &&
              std::any_of(latest_pn_.begin(), latest_pn_.end(), [](double v) { return v > 0.0; })) {
     initial = &latest_pn_;
+    // The last solve's pressure on the same grid, unmoved (an iterate of the vertical-force
+    // iteration a fraction of an element away): its displacement came with it.
+    if (latest_is_last_normal_) initial_un = &last->un;
   } else if (problem_.sequence.normal_from_previous && prev_.present &&
              std::any_of(prev_.pn.begin(), prev_.pn.end(), [](double v) { return v > 0.0; })) {
     initial = &prev_.pn;
@@ -516,8 +522,8 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   } else {
     normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner,
                                 ops.interaction.get());
-    r = solver.solve(h_star, load, load_value, settings, initial, sol_.material.nu,
-                     sol_.material.g);
+    r = solver.solve(h_star, load, load_value, settings, initial, sol_.material.nu, sol_.material.g,
+                     initial_un);
   }
   st_.last_normal.reset();
   if (r.converged && !nonsymmetric && !interaction_ && !sol_.material.table) {
@@ -1030,10 +1036,20 @@ const Solution* CaseSolver::map_sequence(model::TangentialKind kind) {
   // A new step starts from the extrapolated previous steps; the iterates of a step from the
   // last of them, full solve or normal estimate.
   if (problem_.sequence.normal_from_previous && prev != nullptr && !problem_.sequence.new_step &&
-      !st_.latest_pn.empty())
-    latest_pn_ = map_field(st_.latest_pn, st_.latest_grid, grid_,
-                           problem_.sequence.origin_x_mm - st_.latest_origin_x,
-                           problem_.sequence.origin_y_mm - st_.latest_origin_y);
+      !st_.latest_pn.empty()) {
+    const double sx = problem_.sequence.origin_x_mm - st_.latest_origin_x;
+    const double sy = problem_.sequence.origin_y_mm - st_.latest_origin_y;
+    latest_pn_ = map_field(st_.latest_pn, st_.latest_grid, grid_, sx, sy);
+    // Element for element the last normal solve's pressure (same grid, no offset): A·p is that
+    // solve's displacement.
+    const std::optional<ElementOffset> o = element_offset(st_.latest_grid, grid_, sx, sy);
+    const auto& last = st_.last_normal;
+    latest_is_last_normal_ =
+        o && o->ox == 0 && o->oy == 0 && last && st_.latest_grid.mx == grid_.mx &&
+        st_.latest_grid.my == grid_.my && last->grid.mx == grid_.mx && last->grid.my == grid_.my &&
+        last->grid.dx == grid_.dx && last->grid.dy == grid_.dy && last->g == sol_.material.g &&
+        last->nu == sol_.material.nu && last->k == sol_.material.k && last->pn == st_.latest_pn;
+  }
   return prev;
 }
 

@@ -162,15 +162,21 @@ std::size_t free_set_residual(const std::vector<double>& h, const std::vector<do
 }  // namespace
 
 bool NormalSolver::start(const std::vector<double>& h, NormalLoad load, double value,
-                         const std::vector<double>* initial, double poisson, double modulus,
-                         NormalResult& res) {
+                         const std::vector<double>* initial, const std::vector<double>* initial_un,
+                         double poisson, double modulus, NormalResult& res) {
   const std::size_t n = grid_.size();
   const bool force_given = load == NormalLoad::Force;
   const double target_sum = force_given ? value / grid_.element_area() : 0.0;
   res.pn = initial ? *initial : initial_pressure(grid_, h, load, value, poisson, modulus);
   std::vector<double>& p = res.pn;
+  // A·p given with the pressure holds while the clipping below changes nothing.
+  bool known_un = initial != nullptr && initial_un != nullptr && initial_un->size() == n &&
+                  initial->size() == n && interaction_ == nullptr;
   for (std::size_t i = 0; i < n; ++i)
-    if (is_excluded(h[i]) || p[i] < 0.0) p[i] = 0.0;
+    if (is_excluded(h[i]) || p[i] < 0.0) {
+      known_un = known_un && p[i] == 0.0;
+      p[i] = 0.0;
+    }
   res.un.assign(n, 0.0);
 
   bool any = std::any_of(p.begin(), p.end(), [](double v) { return v > 0.0; });
@@ -181,16 +187,23 @@ bool NormalSolver::start(const std::vector<double>& h, NormalLoad load, double v
     if (force_given && it != h.end() && !is_excluded(*it)) {
       p[static_cast<std::size_t>(it - h.begin())] = target_sum;
       any = true;
+      known_un = false;
     } else if (!force_given && (it == h.end() || *it - value >= 0.0)) {
       res.pen = value;
       res.converged = true;
       return false;
     }
   }
+  double scale = 1.0;
   if (force_given) {
     double s = 0.0;
     for (double v : p) s += v;
-    for (double& v : p) v *= target_sum / s;
+    scale = target_sum / s;
+    for (double& v : p) v *= scale;
+  }
+  if (known_un && any) {
+    for (std::size_t i = 0; i < n; ++i) res.un[i] = scale * (*initial_un)[i];
+    return true;
   }
   a_.apply(p.data(), res.un.data());
   ++res.products;
@@ -248,11 +261,12 @@ void NormalSolver::finish(const std::vector<double>& h, bool force_given, double
 
 NormalResult NormalSolver::solve(const std::vector<double>& h, NormalLoad load, double value,
                                  const NormalSettings& settings, const std::vector<double>* initial,
-                                 double poisson, double modulus) {
+                                 double poisson, double modulus,
+                                 const std::vector<double>* initial_un) {
   const std::size_t n = grid_.size();
   const bool force_given = load == NormalLoad::Force;
   NormalResult res;
-  if (!start(h, load, value, initial, poisson, modulus, res)) return res;
+  if (!start(h, load, value, initial, initial_un, poisson, modulus, res)) return res;
   std::vector<double>& p = res.pn;
   std::vector<double>& u = res.un;
   const double target_sum = force_given ? value / grid_.element_area() : 0.0;

@@ -56,16 +56,20 @@ class NormalSolver {
   /// Solves for the undeformed distance h (grid.size() values [mm]; values ≥ 1e29 mark excluded
   /// elements). `value` is PEN [mm] or FN [N]. `initial` (optional, grid.size() values) is a
   /// starting pressure; otherwise an estimate from the geometry is used.
+  /// `initial_un`, if given, is A·initial made before (the previous solve's pressure on the
+  /// same grid): the start takes it instead of a product of its own.
   NormalResult solve(const std::vector<double>& h, NormalLoad load, double value,
                      const NormalSettings& settings, const std::vector<double>* initial = nullptr,
-                     double poisson = 0.3, double modulus = 1.0);
+                     double poisson = 0.3, double modulus = 1.0,
+                     const std::vector<double>* initial_un = nullptr);
 
  private:
   /// Initial pressure (estimate or `initial`, clipped to p ≥ 0, scaled to the force) and its
   /// displacement in res.pn, res.un. Returns false when the start is already the answer (no
   /// element penetrates under a prescribed approach).
   bool start(const std::vector<double>& h, NormalLoad load, double value,
-             const std::vector<double>* initial, double poisson, double modulus, NormalResult& res);
+             const std::vector<double>* initial, const std::vector<double>* initial_un,
+             double poisson, double modulus, NormalResult& res);
   /// Final consistent displacement, force, approach and contact count, and the independent check
   /// of the contact conditions that may revoke res.converged.
   void finish(const std::vector<double>& h, bool force_given, double value,

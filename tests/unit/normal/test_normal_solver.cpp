@@ -131,6 +131,35 @@ TEST(NormalSolver, ForceAndApproachSolvesAreMutuallyConsistent) {
     ASSERT_NEAR(by_pen.pn[i], by_force.pn[i], 1e-7 * max_of(by_force.pn));
 }
 
+// A warm start whose displacement the caller has (the last solve's pressure on the same grid,
+// as the vertical-force iteration's estimates have) gives the solve without that start's own
+// product: the same iterations and the same answer bit for bit under a prescribed approach,
+// one product fewer.
+TEST(NormalSolver, AKnownStartingDisplacementSavesTheStartingProduct) {
+  HertzCase s = make_hertz_setup(2.0, 31);
+  const NormalResult first = solve_hertz(s, NormalLoad::Approach, 1e-10);
+  ASSERT_TRUE(first.converged);
+  std::vector<double> deeper = s.h;  // the next estimate: the body 0.1 % deeper
+  for (double& v : deeper) v -= 1e-3 * s.hertz.pen;
+  NormalSolver solver(s.grid, *s.product, s.kernel, *s.precond);
+  NormalSettings settings;
+  settings.eps = 1e-10;
+  const NormalResult plain = solver.solve(deeper, NormalLoad::Approach, s.hertz.pen, settings,
+                                          &first.pn, steel.nu, steel.g);
+  const NormalResult known = solver.solve(deeper, NormalLoad::Approach, s.hertz.pen, settings,
+                                          &first.pn, steel.nu, steel.g, &first.un);
+  ASSERT_TRUE(plain.converged && known.converged);
+  EXPECT_EQ(known.products, plain.products - 1);
+  EXPECT_EQ(known.iterations, plain.iterations);
+  EXPECT_EQ(known.pn, plain.pn);
+  EXPECT_EQ(known.fn, plain.fn);
+  // Under a prescribed force the start is scaled, and its displacement with it.
+  const NormalResult by_force = solver.solve(deeper, NormalLoad::Force, 1.01 * first.fn, settings,
+                                             &first.pn, steel.nu, steel.g, &first.un);
+  ASSERT_TRUE(by_force.converged);
+  EXPECT_NEAR(by_force.fn, 1.01 * first.fn, 1e-9 * first.fn);
+}
+
 TEST(NormalSolver, SatisfiesContactConditions) {
   HertzCase s = make_hertz_setup(0.5, 31);
   const NormalResult r = solve_hertz(s, NormalLoad::Force, 1e-10);
