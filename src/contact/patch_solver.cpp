@@ -48,6 +48,12 @@ using Field = std::vector<double>;
 /// that leaves boxes of 0.55–0.7 of the grid); 0.99 measured the same as 0.75.
 constexpr double max_contact_box_fraction = 0.75;
 
+/// The elastic energy ½Σ(p·u)·δxδy [J] from the sum Σ(p_n u_n + p_x u_x + p_y u_y) [N/mm] over
+/// the elements and their area [mm²] (CONTACT's ELAST.EN; N·mm → J).
+double elastic_energy_J(double sum_p_dot_u, double element_area_mm2) {
+  return 0.5e-3 * sum_p_dot_u * element_area_mm2;
+}
+
 /// Element (ix, iy) of a grid is element (ix + ox, iy + oy) of an older one.
 struct ElementOffset {
   long ox = 0, oy = 0;
@@ -1284,8 +1290,8 @@ void CaseSolver::compute_totals(const tangential::TangentialResult* tang) {
   t.fy *= area;
   t.mz *= area;
   t.contact_area = st.ncon * area;
-  // N·mm → J; not defined with prescribed pressures (u_n unknown).
-  t.elastic_energy = !normal_known || rough_ ? 0.0 : 0.5e-3 * energy * area;
+  // Not defined with prescribed pressures (u_n unknown).
+  t.elastic_energy = !normal_known || rough_ ? 0.0 : elastic_energy_J(energy, area);
   t.frictional_power = 1e-3 * power * area / s.kinematics.dt;  // N·mm/s → W (T=1: J per step)
 }
 
@@ -1380,7 +1386,7 @@ void PatchSolver::complete_elastic_energy(const model::PatchProblem& problem, So
   double energy = 0.0;
   for (std::size_t i = 0; i < n; ++i)
     energy += s.pn[i] * s.un[i] + at(s.px, i) * at(s.ux, i) + at(s.py, i) * at(s.uy, i);
-  s.totals.elastic_energy = 0.5e-3 * energy * s.grid.element_area();  // N·mm → J
+  s.totals.elastic_energy = elastic_energy_J(energy, s.grid.element_area());
 }
 
 }  // namespace rollcontact
