@@ -127,12 +127,9 @@ TEST(WheelRailReportLayout, RightAndLeftWheelsAsContactPrintsThem) {
   expect_same_layout("mbench_a22_left");
 }
 
-/// O = 4 adds the total moments about the profiles' markers (spec/outputs.md §3.8): they are
-/// the solution's, and about the rail marker the single patch's force acting at its reference
-/// point gives them but for its own torsional moment MN.
-TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
-  REQUIRE_EXAMPLES();
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_layout_moments";
+/// Case 1 of mbench_a22_right alone, with its H-G-I-A-O-W-R line replaced by `digits`, run in a
+/// fresh folder `dir` (case.inp, case.out there).
+RunResult run_right_case1(const fs::path& dir, const std::string& digits) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   for (const char* name : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
@@ -140,10 +137,18 @@ TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
   std::ifstream in(examples_dir / "mbench_a22_right.inp");
   std::string text, l;
   for (int n = 1; std::getline(in, l) && n <= 26; ++n)
-    text += (n == 15 ? std::string(" 0000421    H-G-I-A-O-W-R") : l) + "\n";
+    text += (n == 15 ? " " + digits + "    H-G-I-A-O-W-R" : l) + "\n";
   std::ofstream(dir / "case.inp") << text << " 0 MODULE\n";
-  RunOptions options;
-  const RunResult r = run_input_file(dir / "case.inp", options);
+  return run_input_file(dir / "case.inp", RunOptions{});
+}
+
+/// O = 4 adds the total moments about the profiles' markers (spec/outputs.md §3.8): they are
+/// the solution's, and about the rail marker the single patch's force acting at its reference
+/// point gives them but for its own torsional moment MN.
+TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
+  REQUIRE_EXAMPLES();
+  const fs::path dir = fs::temp_directory_path() / "rollcontact_layout_moments";
+  const RunResult r = run_right_case1(dir, "0000421");
   ASSERT_EQ(r.cases.size(), 1U);
   ASSERT_TRUE(r.cases[0].solved) << r.cases[0].error;
   const WheelRailSolution& s = r.cases[0].wheelrail;
@@ -151,7 +156,7 @@ TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
 
   std::ifstream out(dir / "case.out");
   std::vector<std::string> lines;
-  while (std::getline(out, l)) lines.push_back(l);
+  for (std::string l; std::getline(out, l);) lines.push_back(l);
   std::vector<double> printed;
   for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
     if (lines[i].rfind(" TOTAL FORCES ON RAIL", 0) == 0) ADD_FAILURE() << "no moments title";
@@ -185,16 +190,7 @@ TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
 TEST(WheelRailReportLayout, OutputFivePrintsEachPatchsElementTable) {
   REQUIRE_EXAMPLES();
   const fs::path dir = fs::temp_directory_path() / "rollcontact_layout_elements";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  for (const char* name : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
-    fs::copy_file(examples_dir / name, dir / name);
-  std::ifstream in(examples_dir / "mbench_a22_right.inp");
-  std::string text, l;
-  for (int n = 1; std::getline(in, l) && n <= 26; ++n)
-    text += (n == 15 ? std::string(" 0000521    H-G-I-A-O-W-R") : l) + "\n";
-  std::ofstream(dir / "case.inp") << text << " 0 MODULE\n";
-  const RunResult r = run_input_file(dir / "case.inp", RunOptions{});
+  const RunResult r = run_right_case1(dir, "0000521");
   ASSERT_EQ(r.cases.size(), 1U);
   ASSERT_TRUE(r.cases[0].solved) << r.cases[0].error;
   ASSERT_EQ(r.cases[0].wheelrail.patches.size(), 1U);
@@ -207,7 +203,7 @@ TEST(WheelRailReportLayout, OutputFivePrintsEachPatchsElementTable) {
   std::ifstream out(dir / "case.out");
   bool table = false;
   double y = 0.0;
-  while (std::getline(out, l)) {
+  for (std::string l; std::getline(out, l);) {
     if (l.rfind(" QUANTITIES DISTRIBUTED OVER THE CONTACT AREA:", 0) == 0) table = true;
     if (!table) continue;
     if (l.rfind(" Y = ", 0) == 0) {
