@@ -44,10 +44,10 @@ std::optional<WholeSteps> whole_steps(const Grid& grid, const CombinedMaterial& 
 
 }  // namespace
 
-Kernel cut_kernel(const Kernel& big, int mx, int my) {
+Kernel cut_kernel(const Kernel& big, int mx, int my, int ox, int oy) {
   Kernel k(mx, my);
   for (int diy = -(my - 1); diy <= my - 1; ++diy)
-    for (int dix = -(mx - 1); dix <= mx - 1; ++dix) k.at(dix, diy) = big.at(dix, diy);
+    for (int dix = -(mx - 1); dix <= mx - 1; ++dix) k.at(dix, diy) = big.at(dix + ox, diy + oy);
   return k;
 }
 
@@ -114,16 +114,10 @@ std::vector<Kernel> KernelLibrary::kernels(const std::vector<Component>& cs, con
     Grid wider = grid;
     wider.mx += std::abs(w->nx);
     wider.my += std::abs(w->ny);
-    std::vector<Kernel> plain = kernels(cs, wider, m, 0.0, 0.0);
     std::vector<Kernel> shifted;
     shifted.reserve(cs.size());
-    for (const Kernel& k : plain) {
-      Kernel cut(grid.mx, grid.my);
-      for (int diy = -(grid.my - 1); diy <= grid.my - 1; ++diy)
-        for (int dix = -(grid.mx - 1); dix <= grid.mx - 1; ++dix)
-          cut.at(dix, diy) = k.at(dix + w->nx, diy + w->ny);
-      shifted.push_back(std::move(cut));
-    }
+    for (const Kernel& k : kernels(cs, wider, m, 0.0, 0.0))
+      shifted.push_back(cut_kernel(k, grid.mx, grid.my, w->nx, w->ny));
     return shifted;
   }
   std::vector<std::optional<Kernel>> out(cs.size());

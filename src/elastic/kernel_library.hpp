@@ -59,7 +59,9 @@ class KernelLibrary {
   std::size_t computed_ = 0;
 };
 
-/// The centre (2mx−1) × (2my−1) offsets of a kernel of at least mx × my elements.
-Kernel cut_kernel(const Kernel& big, int mx, int my);
+/// The (2mx−1) × (2my−1) offsets of a kernel of at least (mx + |ox|) × (my + |oy|) elements
+/// around its offset (ox, oy): its centre by default, the kernel seen (ox, oy) elements away
+/// otherwise (a rolling shift of whole elements).
+Kernel cut_kernel(const Kernel& big, int mx, int my, int ox = 0, int oy = 0);
 
 }  // namespace rollcontact::elastic
