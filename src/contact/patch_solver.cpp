@@ -466,10 +466,8 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   const CombinedMaterial& mat = sol_.material;
   if (problem_.sequence.normal_from_previous && sol_.pn.empty() && last &&
       last->eps <= problem_.solver.tolerance && last->force_given == force_given &&
-      last->load == load_value && last->g == mat.g && last->nu == mat.nu && last->k == mat.k &&
-      !interaction_ && !mat.viscoelastic() && !mat.table && last->grid.mx == grid_.mx &&
-      last->grid.my == grid_.my && last->grid.dx == grid_.dx && last->grid.dy == grid_.dy &&
-      last->h == h_star) {
+      last->load == load_value && last->same_operator(grid_, mat) && !interaction_ &&
+      !mat.viscoelastic() && !mat.table && last->h == h_star) {
     sol_.pn = last->pn;
     normal_un_ = last->un;
     sol_.totals.pen = last->pen;
@@ -1050,11 +1048,9 @@ const Solution* CaseSolver::map_sequence(model::TangentialKind kind) {
     // solve's displacement.
     const std::optional<ElementOffset> o = element_offset(st_.latest_grid, grid_, sx, sy);
     const auto& last = st_.last_normal;
-    latest_is_last_normal_ =
-        o && o->ox == 0 && o->oy == 0 && last && st_.latest_grid.mx == grid_.mx &&
-        st_.latest_grid.my == grid_.my && last->grid.mx == grid_.mx && last->grid.my == grid_.my &&
-        last->grid.dx == grid_.dx && last->grid.dy == grid_.dy && last->g == sol_.material.g &&
-        last->nu == sol_.material.nu && last->k == sol_.material.k && last->pn == st_.latest_pn;
+    latest_is_last_normal_ = o && o->ox == 0 && o->oy == 0 && last &&
+                             st_.latest_grid.mx == grid_.mx && st_.latest_grid.my == grid_.my &&
+                             last->same_operator(grid_, sol_.material) && last->pn == st_.latest_pn;
   }
   return prev;
 }

@@ -36,6 +36,12 @@ struct PatchSolver::Impl {
     double load = 0.0, g = 0.0, nu = 0.0, k = 0.0;
     double pen = 0.0;
     double eps = 0.0;  ///< the tolerance it was solved to
+    /// Solved with the normal operator of this grid size and element and this material (so its
+    /// un is A·pn there).
+    bool same_operator(const Grid& other, const CombinedMaterial& m) const {
+      return grid.mx == other.mx && grid.my == other.my && grid.dx == other.dx &&
+             grid.dy == other.dy && g == m.g && nu == m.nu && k == m.k;
+    }
   };
   std::optional<NormalAnswer> last_normal;
 };
