@@ -194,3 +194,58 @@ TEST(VerticalForce, ShareCorrectionNeedsNoFurtherNormalEstimates) {
 
 }  // namespace
 }  // namespace rollcontact::wheelrail
+
+namespace rollcontact::wheelrail {
+namespace {
+
+/// A power-law patch whose force jumps by `jump_N` at z = 0.2 mm (KPEC when a second region of
+/// the gap joins the patch: mbench right wheel, 50 kN, y = 4.9 mm, 44.4 → 106.9 kN).
+HeightSample jumping(double z, double jump_N) {
+  HeightSample h;
+  h.z_mm = z;
+  const double pen = std::max(0.0, z - 0.1);
+  const double fn = 4.0e6 * std::pow(pen, 1.5) + (z > 0.2 ? jump_N : 0.0);
+  h.fz_N = fn;
+  h.patches.push_back({pen, 0.0, fn, 0.0});
+  return h;
+}
+
+// The target inside a large jump: no height gives it. The iteration says so — with both forces
+// and the place of the jump — after bisecting to a bracket narrower than EPS, not after MAXNR
+// proposals that only nibble at one end of the bracket.
+TEST(VerticalForce, AJumpOverTheTargetIsNotConvergedAndSaysWhere) {
+  VerticalForceSettings st;
+  st.target_N = jumping(0.2, 0.0).fz_N + 2.0e4;  // 20 kN into a 60 kN jump
+  st.tolerance = 1e-5;
+  int solves = 0;
+  const VerticalForceResult r = solve_vertical_force(st, 0.1, 0.15, [&](double z) {
+    ++solves;
+    return jumping(z, 6.0e4);
+  });
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("jumps"), std::string::npos) << r.message;
+  EXPECT_NEAR(r.z_mm, 0.2, st.tolerance);
+  EXPECT_LE(solves, 25);
+}
+
+// A jump smaller than 1 % of FZ over the target (CONTACT's mbench_a22_kpec c1 stops 18 N short
+// of 10 kN): the nearer side stands, converged, with the remaining difference as a warning.
+TEST(VerticalForce, ASmallJumpOverTheTargetEndsOnItsNearerSide) {
+  VerticalForceSettings st;
+  const double below = jumping(0.2, 0.0).fz_N;
+  st.target_N = below + 10.0;  // 10 N above the lower side of a 50 N jump
+  st.tolerance = 1e-5;
+  double last_z = -1.0;
+  const VerticalForceResult r = solve_vertical_force(st, 0.1, 0.15, [&](double z) {
+    last_z = z;
+    return jumping(z, 50.0);
+  });
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_NE(r.message.find("EPS"), std::string::npos) << r.message;
+  EXPECT_EQ(r.z_mm, last_z);  // the last solve is the answer
+  EXPECT_LE(r.z_mm, 0.2);     // the lower side: 10 N off, not 40 N
+  EXPECT_NEAR(jumping(r.z_mm, 50.0).fz_N, st.target_N, 10.0 + 1e-5 * 4.0e6);
+}
+
+}  // namespace
+}  // namespace rollcontact::wheelrail
