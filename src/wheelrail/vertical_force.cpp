@@ -240,7 +240,8 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
                               solve_at, res);
         return res;
       }
-      res.converged = true;
+      // Steps below EPS without a bracket: an answer only if F_z is near the target.
+      res.converged = std::abs(residual) <= jump_tolerance(st, f_tol);
       res.message = fmt::format("stopped on |dz| < EPS with FZ - target = {:.4g} N", residual);
       return res;
     }

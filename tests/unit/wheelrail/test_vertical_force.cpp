@@ -247,5 +247,22 @@ TEST(VerticalForce, ASmallJumpOverTheTargetEndsOnItsNearerSide) {
   EXPECT_NEAR(jumping(r.z_mm, 50.0).fz_N, st.target_N, 10.0 + 1e-5 * 4.0e6);
 }
 
+// Proposals that move by less than EPS with F_z still 10 % below the target (here a patch that
+// reports a vanishing approach, so the power-law model sees no room to move): not an answer.
+TEST(VerticalForce, StepsBelowEpsFarFromTheTargetAreNotConverged) {
+  VerticalForceSettings st;
+  st.target_N = 1.0e4;
+  st.tolerance = 1e-5;
+  const VerticalForceResult r = solve_vertical_force(st, 0.1, 0.15, [&](double z) {
+    HeightSample h;
+    h.z_mm = z;
+    h.fz_N = 0.9 * st.target_N;
+    h.patches.push_back({1e-9, 0.0, h.fz_N, 0.0});
+    return h;
+  });
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("EPS"), std::string::npos) << r.message;
+}
+
 }  // namespace
 }  // namespace rollcontact::wheelrail
