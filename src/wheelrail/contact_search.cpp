@@ -364,6 +364,7 @@ double contact_distance(const GapFunction& g, const PlacedProfiles& prof, const 
 void turn_neighbour_angles(std::vector<ContactRegion>& patches,
                            const model::ContactSearchSettings& s, const GapFunction& g,
                            const PlacedProfiles& prof) {
+  for (ContactRegion& r : patches) r.delta_own_rad = r.delta_rad;
   if (!(s.d_turn_mm > s.d_sep_mm)) return;
   std::vector<double> turned(patches.size());
   for (std::size_t k = 0; k < patches.size(); ++k) turned[k] = patches[k].delta_rad;

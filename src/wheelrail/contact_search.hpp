@@ -40,6 +40,8 @@ struct ContactRegion {
   int regions = 1;                  ///< interpenetration regions combined into this one
   /// Its reference angle was turned towards a neighbour between D_SEP and D_TURN.
   bool angle_turned = false;
+  /// The region's own angle, before any turning (= delta_rad when not turned).
+  double delta_own_rad = 0.0;
   double weight = 0.0;                  ///< Σ w of the samples
   double wx = 0.0, wy = 0.0, wd = 0.0;  ///< Σ w·x_lc, Σ w·y, Σ w·α (for combination)
   /// Regions combined at a distance D_COMB < d ≤ D_SEP, by lateral position: their influence on

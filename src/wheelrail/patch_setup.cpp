@@ -343,6 +343,13 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
     setup_conformal_patch(p, prof, pose, region, {x_lo, x_hi, s_lo, s_hi}, s, warnings);
   } else {
     setup_planar_grid(p, prof, pose, x_lo, x_hi, s_lo, s_hi, s, warnings);
+    // A patch whose plane was turned (D_SEP < d ≤ D_TURN) measures its undeformed distance
+    // along the turned normal, 1/cos Δ times the surfaces' own normal distance where they are
+    // locally parallel. Its approach is the interpenetration along its own normal, PEN·cos Δ;
+    // the shape h − min h stays the turned plane's (mbench_a22_varfric c3: CONTACT's tread PEN
+    // 6.464 µm and FN 1536 N, ours 6.481 / 1539, with PEN along the turned normal 6.505 / 1548;
+    // docs/decisions.md).
+    if (region.angle_turned) s.pen_mm *= std::cos(region.delta_rad - region.delta_own_rad);
     s.kinematics = patch_kinematics(p, pose, prof, s.frame, s.pen_mm);
   }
   set_attenuated_parts(prof, region, s.frame, q.gap);

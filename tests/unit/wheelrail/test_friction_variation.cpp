@@ -66,9 +66,12 @@ TEST(FrictionVariation, TurnedPatchesAreRefusedThroughTheInpRouteOnly) {
   // along the contact (the mean of the rail's and the wheel's arc between the regions' zero
   // crossings, 6.815 mm), their angles turned towards their weighted mean by (D_TURN − d)/
   // (D_TURN − D_SEP): CONTACT's −0.2480 and −0.2930 rad (unturned −0.1326 and −0.2984). The
-  // tread patch's force is still 0.8 % above CONTACT's, so the .inp route (validated_only)
-  // refuses the case; the API solves it. V=1 takes the friction at the turned angle in the
-  // wheel's frame: 0.258 on the tread patch, as CONTACT's FS/FN.
+  // turned tread patch's approach is its interpenetration along its own normal. The angles
+  // move by 11 rad per mm of z_ws, and the flange patch (0.25 % softer than CONTACT's, as the
+  // benchmark's flange contacts are) sets z_ws 2e-5 mm higher than CONTACT's: 3e-4 rad, beyond
+  // the validation's 1e-4, so the .inp route (validated_only) refuses the case; the API solves
+  // it. V=1 takes the friction at the turned angle in the wheel's frame: 0.258 on the tread
+  // patch, as CONTACT's FS/FN.
   REQUIRE_EXAMPLES();
   const std::filesystem::path dir{ROLLCONTACT_EXAMPLES_DIR};
   const auto cases = format::read_input_cases(dir / "mbench_a22_varfric.inp");
@@ -80,9 +83,16 @@ TEST(FrictionVariation, TurnedPatchesAreRefusedThroughTheInpRouteOnly) {
   const WheelRailSolution s = WheelsetSolver().solve(p);
   ASSERT_TRUE(s.converged) << s.message;
   ASSERT_EQ(s.patches.size(), 2U);
-  EXPECT_NEAR(s.patches[0].contact_angle_rad, -0.2480, 1.05e-4);
+  EXPECT_NEAR(s.patches[0].contact_angle_rad, -0.2480, 4e-4);
   EXPECT_NEAR(s.patches[1].contact_angle_rad, -0.2930, 1.05e-4);
   EXPECT_NEAR(s.patches[0].friction.static_coefficient, 0.258, 1e-3);
+  // The patches' forces and the tread's approach within the module-1 validation tolerances
+  // (0.5 % + 2e-4·FZ; approach 0.5 %): tread 1536 N at 6.464 µm, flange 8244 N. Along the
+  // turned normal the tread's approach was 6.505 µm and its force 1548 N.
+  auto tol = [](double f) { return 5e-3 * std::abs(f) + 2.0; };
+  EXPECT_NEAR(s.patches[0].solution.totals.fn, 1536.0, tol(1536.0));
+  EXPECT_NEAR(s.patches[1].solution.totals.fn, 8244.0, tol(8244.0));
+  EXPECT_NEAR(s.patches[0].solution.totals.pen, 6.464e-3, 5e-3 * 6.464e-3);
   // Solved, but said: the warning names what is not validated.
   ASSERT_FALSE(s.warnings.empty());
   EXPECT_NE(s.warnings.back().find("not validated against CONTACT: patches between D_SEP and "
