@@ -78,23 +78,21 @@ struct BracketEnds {
   double lo, hi, f_lo, f_hi, slope_lo, slope_hi;
 };
 
-/// The end of an iteration whose bracket is narrower than EPS, the last iterate `it` with
+/// The end of an iteration whose bracket is narrower than EPS, the last iterate's residual
 /// `residual`: converged where F_z meets the target within jump_tolerance — on the nearer side,
-/// solved again if that is not the last iterate —, not converged across a larger jump of F_z.
+/// solved once more by `again(z)` (which traces it and returns its residual) if that is not the
+/// last iterate —, not converged across a larger jump of F_z, whose place the result keeps.
 void end_on_narrow_bracket(const VerticalForceSettings& st, double f_tol, const BracketEnds& b,
-                           double residual, int it,
-                           const std::function<HeightSample(double)>& solve_at,
+                           double residual, const std::function<double(double)>& again,
                            VerticalForceResult& res) {
   const double k = st.spring_N_per_mm;
   const double jump_tol = jump_tolerance(st, f_tol);
   const double nearer = std::min(std::abs(b.f_lo), std::abs(b.f_hi));
   if (nearer < std::abs(residual) && nearer <= jump_tol) {
     const double z = std::abs(b.f_lo) <= std::abs(b.f_hi) ? b.lo : b.hi;
-    const HeightSample again = solve_at(z);
-    res.trace.push_back({it + 1, z, again.fz_N, z == b.lo ? b.slope_lo : b.slope_hi});
+    residual = again(z);
     res.z_mm = z;
-    residual = again.fz_N + k * z - st.target_N;
-    res.converged = std::isfinite(again.fz_N);
+    res.converged = std::isfinite(residual);
   } else if (std::abs(residual) > jump_tol) {
     // A jump of F_z larger than the target allows: no height gives FZ.
     res.message = fmt::format(
@@ -102,6 +100,8 @@ void end_on_narrow_bracket(const VerticalForceSettings& st, double f_tol, const 
         "z_ws = {:.7g} and {:.7g} mm (the contact changes abruptly there, e.g. a second region "
         "joins a KPEC or ANALYN patch)",
         st.target_N, b.f_lo + st.target_N - k * b.lo, b.f_hi + st.target_N - k * b.hi, b.lo, b.hi);
+    res.jump_lo_mm = b.lo;
+    res.jump_hi_mm = b.hi;
     return;
   } else {
     res.converged = true;
@@ -236,8 +236,13 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
     // (c1: NR 3–7, all at z_ws 0.1956).
     if (bracketed ? hi - lo < st.tolerance : it > 1 && std::abs(z - prev_z) < st.tolerance) {
       if (bracketed) {
-        end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi, slope_lo, slope_hi}, residual, it,
-                              solve_at, res);
+        const auto again = [&](double zz) {
+          const HeightSample h = solve_at(zz);
+          res.trace.push_back({it + 1, zz, h.fz_N, zz == lo ? slope_lo : slope_hi});
+          return h.fz_N + k * zz - st.target_N;
+        };
+        end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi, slope_lo, slope_hi}, residual, again,
+                              res);
         return res;
       }
       // Steps below EPS without a bracket: an answer only if F_z is near the target.
@@ -380,7 +385,24 @@ VerticalForceResult solve_vertical_force_split(
         known);
     append(estimate);
     if (!estimate.converged) {
-      // Estimates that end on a jump of F_z leave its place: the full solves start there.
+      // Estimates that end on a jump of F_z: full solves at its two sides decide when they
+      // straddle the target too (the tangential share rarely moves a jump); else the full
+      // solves start there.
+      if (std::isfinite(estimate.jump_lo_mm)) {
+        const double lo = estimate.jump_lo_mm, hi = estimate.jump_hi_mm;
+        full(lo);
+        const double f_lo = s.fz_N + k * lo - st.target_N;
+        full(hi);
+        const double f_hi = s.fz_N + k * hi - st.target_N;
+        if (f_lo < 0.0 && f_hi >= 0.0) {
+          const auto again = [&](double zz) {
+            full(zz);
+            return s.fz_N + k * zz - st.target_N;
+          };
+          end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi, 0.0, 0.0}, f_hi, again, res);
+          return res;
+        }
+      }
       if (std::isfinite(estimate.z_mm) && estimate.z_mm > start_mm) z = estimate.z_mm;
       break;
     }

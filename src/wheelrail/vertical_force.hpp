@@ -6,6 +6,7 @@
 // solve, with bisection as the fall-back.
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,9 @@ struct VerticalForceResult {
   bool converged = false;
   std::string message;
   std::vector<VerticalForceStep> trace;
+  /// Not converged because F_z jumps over the target between these heights [mm]; NaN otherwise.
+  double jump_lo_mm = std::numeric_limits<double>::quiet_NaN();
+  double jump_hi_mm = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// `start_mm`: the height where contact starts (iterate 0), `first_guess_mm` the Hertz estimate.

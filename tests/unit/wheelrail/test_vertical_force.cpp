@@ -228,6 +228,26 @@ TEST(VerticalForce, AJumpOverTheTargetIsNotConvergedAndSaysWhere) {
   EXPECT_LE(solves, 25);
 }
 
+// The same through the normal estimates: once they end on the jump, one full solve at each of
+// its sides decides — not a new search on full solves.
+TEST(VerticalForce, EstimatesEndingOnAJumpNeedTwoFullSolvesToSayIt) {
+  VerticalForceSettings st;
+  st.target_N = jumping(0.2, 0.0).fz_N + 2.0e4;
+  st.tolerance = 1e-5;
+  st.continuous_force = false;  // KPEC
+  int full_solves = 0;
+  const auto full_at = [&](double z) {
+    ++full_solves;
+    return jumping(z, 6.0e4);
+  };
+  const auto normal_at = [&](double z, const std::vector<double>&) { return jumping(z, 6.0e4); };
+  const VerticalForceResult r = solve_vertical_force_split(st, 0.1, 0.15, full_at, normal_at);
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("jumps"), std::string::npos) << r.message;
+  EXPECT_NEAR(r.z_mm, 0.2, st.tolerance);
+  EXPECT_LE(full_solves, 3);  // the first, then one each side of the jump
+}
+
 // A jump smaller than 1 % of FZ over the target (CONTACT's mbench_a22_kpec c1 stops 18 N short
 // of 10 kN): the nearer side stands, converged, with the remaining difference as a warning.
 TEST(VerticalForce, ASmallJumpOverTheTargetEndsOnItsNearerSide) {
