@@ -72,10 +72,9 @@ double jump_tolerance(const VerticalForceSettings& st, double f_tol) {
   return std::max(1e-2 * scale, f_tol);
 }
 
-/// A bracket [lo, hi] of z_ws [mm] with F_z + k·z − target [N] and the power-law model's slope
-/// dF_z/dz [N/mm] at its ends.
+/// A bracket [lo, hi] of z_ws [mm] with F_z + k·z − target [N] at its ends.
 struct BracketEnds {
-  double lo, hi, f_lo, f_hi, slope_lo, slope_hi;
+  double lo, hi, f_lo, f_hi;
 };
 
 /// The end of an iteration whose bracket is narrower than EPS, the last iterate's residual
@@ -241,8 +240,7 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
           res.trace.push_back({it + 1, zz, h.fz_N, zz == lo ? slope_lo : slope_hi});
           return h.fz_N + k * zz - st.target_N;
         };
-        end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi, slope_lo, slope_hi}, residual, again,
-                              res);
+        end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi}, residual, again, res);
         return res;
       }
       // Steps below EPS without a bracket: an answer only if F_z is near the target.
@@ -399,7 +397,7 @@ VerticalForceResult solve_vertical_force_split(
             full(zz);
             return s.fz_N + k * zz - st.target_N;
           };
-          end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi, 0.0, 0.0}, f_hi, again, res);
+          end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi}, f_hi, again, res);
           return res;
         }
       }
