@@ -156,6 +156,12 @@ class OperatorCache {
   CoarseSteadyOperators& coarse_steady(const Grid& grid, const CombinedMaterial& material,
                                        double shift_x_mm, double shift_y_mm);
 
+  /// The grid's normal kernel C_nn / G from the kept kernels (approximate pressures that need
+  /// the displacement at one point: KPEC's level; no operator set is built for them).
+  elastic::Kernel normal_kernel(const Grid& grid, const CombinedMaterial& material) {
+    return kernels_.kernel(elastic::Component::nn, grid, material);
+  }
+
   /// Operator sets assembled so far and held now, all kinds together (for tests and reports).
   std::size_t builds() const noexcept;
   std::size_t size() const noexcept;

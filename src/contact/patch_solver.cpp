@@ -594,7 +594,8 @@ void CaseSolver::set_approximate_pressure(bool kpec) {
   for (double& v : h_total)
     if (v < geometry::excluded_distance) v -= problem_.normal.approach_mm;
   simplified::ApproximateNormal r =
-      kpec ? simplified::kpec_pressure(grid_, h_total, sol_.material)
+      kpec ? simplified::kpec_pressure(grid_, h_total, sol_.material,
+                                       st_.operators.normal_kernel(grid_, sol_.material))
            : simplified::analyn_pressure(grid_, h_total, sol_.material);
   sol_.pn = std::move(r.pn);
   sol_.solver.kpec_rows_beyond_interpenetration = r.rows_beyond_interpenetration;

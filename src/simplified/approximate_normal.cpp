@@ -88,20 +88,19 @@ double crossing_x(const Grid& grid, const std::vector<double>& h, int iy, int i_
   return grid.x_centre(i_in) + t * (grid.x_centre(i_out) - grid.x_centre(i_in));
 }
 
-/// Σ_J C_nn(I − J) s_J / G: the normal displacement at element I of the pressure field s [mm].
+/// Σ_J C_nn(I − J) s_J / G: the normal displacement at element I of the pressure field s [mm],
+/// `cnn` the grid's normal kernel (already divided by G).
 double displacement_at(const Grid& grid, const std::vector<double>& s, std::size_t i,
-                       const CombinedMaterial& m) {
+                       const elastic::Kernel& cnn) {
   const int ix = static_cast<int>(i % static_cast<std::size_t>(grid.mx));
   const int iy = static_cast<int>(i / static_cast<std::size_t>(grid.mx));
   double u = 0.0;
   for (int jy = 0; jy < grid.my; ++jy)
     for (int jx = 0; jx < grid.mx; ++jx) {
       const double v = s[grid.index(jx, jy)];
-      if (v == 0.0) continue;
-      u += v * elastic::influence_coefficient(elastic::Component::nn, (ix - jx) * grid.dx,
-                                              (iy - jy) * grid.dy, grid.dx, grid.dy, m.nu, m.k);
+      if (v != 0.0) u += v * cnn.at(ix - jx, iy - jy);
     }
-  return u / m.g;
+  return u;
 }
 
 double contact_modulus(const CombinedMaterial& m) {
@@ -138,7 +137,8 @@ double fitted_curvature(const Grid& grid, const std::vector<double>& h, int ix, 
 }  // namespace
 
 ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h,
-                                const CombinedMaterial& material) {
+                                const CombinedMaterial& material,
+                                const elastic::Kernel& normal_kernel) {
   ApproximateNormal r;
   r.pn.assign(grid.size(), 0.0);
   const Deepest d = deepest_point(grid, h);
@@ -203,11 +203,17 @@ ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h,
   }
 
   // 5. The level: the normal displacement at the deepest point equals the approach there.
-  const double u = displacement_at(grid, shape, d.index, material);
+  const double u = displacement_at(grid, shape, d.index, normal_kernel);
   if (!(u > 0.0)) return r;
   const double p_max = pen / u;
   for (std::size_t i = 0; i < shape.size(); ++i) r.pn[i] = p_max * shape[i];
   return r;
+}
+
+ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h,
+                                const CombinedMaterial& material) {
+  return kpec_pressure(grid, h, material,
+                       elastic::make_kernel(elastic::Component::nn, grid, material));
 }
 
 ApproximateNormal analyn_pressure(const Grid& grid, const std::vector<double>& h,

@@ -7,6 +7,7 @@
 
 #include <vector>
 
+#include "elastic/influence.hpp"
 #include "rollcontact/grid.hpp"
 #include "rollcontact/solution.hpp"
 
@@ -25,7 +26,12 @@ struct ApproximateNormal {
 /// KPEC: equivalent curvatures at the deepest point, a row-wise virtual-penetration threshold
 /// that reproduces the Hertz ellipse, semi-elliptic pressures per row scaled so that the normal
 /// displacement at the deepest point equals pen_total. `h_total` has grid.size() values [mm]
-/// (values ≥ 1e29: excluded); `material` gives G, ν, K for the influence coefficients.
+/// (values ≥ 1e29: excluded); `material` gives E* for the Hertz solution, `normal_kernel` (the
+/// grid's C_nn, divided by G: elastic::make_kernel or a kept copy) the normal displacement.
+ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h_total,
+                                const CombinedMaterial& material,
+                                const elastic::Kernel& normal_kernel);
+/// kpec_pressure with the grid's normal kernel tabulated here.
 ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h_total,
                                 const CombinedMaterial& material);
 

@@ -65,7 +65,9 @@ void expect_hertz(Method method) {
 }
 
 TEST(ApproximateNormal, KpecGivesHertzForAQuadraticGap) {
-  expect_hertz(kpec_pressure);
+  expect_hertz([](const Grid& g, const std::vector<double>& h, const CombinedMaterial& m) {
+    return kpec_pressure(g, h, m);
+  });
 }
 
 TEST(ApproximateNormal, AnalynGivesHertzForAQuadraticGap) {
@@ -77,8 +79,9 @@ TEST(ApproximateNormal, NoInterpenetrationNoPressure) {
   g.mx = g.my = 5;
   g.dx = g.dy = 0.1;
   const std::vector<double> h(g.size(), 0.01);
-  for (auto method : {kpec_pressure, analyn_pressure}) {
-    const ApproximateNormal r = method(g, h, kSteel);
+  for (int kpec = 0; kpec < 2; ++kpec) {
+    const ApproximateNormal r =
+        kpec != 0 ? kpec_pressure(g, h, kSteel) : analyn_pressure(g, h, kSteel);
     EXPECT_EQ(r.pen_total, 0.0);
     EXPECT_EQ(std::count(r.pn.begin(), r.pn.end(), 0.0), 25);
   }
