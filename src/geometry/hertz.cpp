@@ -115,15 +115,31 @@ double hertz_axis_ratio(double r) {
                          " is too small (ellipse too elongated)");
     }
   }
-  // Plain bisection to adjacent doubles: monotone, cannot fail, about 55 steps. The spec's
-  // tolerance (1e-9) is a minimum; full precision makes round trips exact to ~1e-15.
+  // False position with the Illinois modification down to adjacent doubles, a bisection
+  // whenever a step leaves the bracket or two steps failed to halve it: monotone and safe as
+  // bisection, but ~10 ratio evaluations instead of ~55 (KPEC and ANALYN solve Hertz problems
+  // per vertical-force iterate and per row). Full precision makes round trips exact to ~1e-15.
+  double f_lo = hertz_curvature_ratio(lo) - r, f_hi = hertz_curvature_ratio(hi) - r;
+  int last_side = 0;
+  double width_before = hi - lo, width_two_before = 2.0 * width_before;
   for (int it = 0; it < 200; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    if (hertz_curvature_ratio(mid) < r) {
-      lo = mid;
+    if (std::nextafter(lo, hi) >= hi) break;
+    double g = f_hi != f_lo ? (lo * f_hi - hi * f_lo) / (f_hi - f_lo) : 0.5 * (lo + hi);
+    if (!(g > lo && g < hi) || hi - lo > 0.5 * width_two_before) g = 0.5 * (lo + hi);
+    width_two_before = width_before;
+    width_before = hi - lo;
+    const double f = hertz_curvature_ratio(g) - r;
+    if (f == 0.0) return g;
+    if (f < 0.0) {
+      lo = g;
+      f_lo = f;
+      if (last_side < 0) f_hi *= 0.5;
+      last_side = -1;
     } else {
-      hi = mid;
+      hi = g;
+      f_hi = f;
+      if (last_side > 0) f_lo *= 0.5;
+      last_side = 1;
     }
   }
   return 0.5 * (lo + hi);
