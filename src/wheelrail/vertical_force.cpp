@@ -193,6 +193,8 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   double width_last = width_before;
   bool have_last = false;  // the previous iterate (for the secant)
   double last_z = 0.0, last_residual = 0.0;
+  // |F_z + k·z − target| of the iterate before the last one [N] (infinite until there is one).
+  double older_abs_residual = std::numeric_limits<double>::infinity();
   const double f_tol = force_tolerance(st);
   if (known != nullptr && std::isfinite(known->fz_N) && known->z_mm > start_mm) {
     const double residual = known->fz_N + k * known->z_mm - st.target_N;
@@ -258,6 +260,12 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
       const double secant_slope = (residual - last_residual) / (z - last_z);
       if (secant_slope > 0.0 && std::isfinite(secant_slope)) next = z - residual / secant_slope;
     }
+    // Fast progress: two steps removed three quarters of the residual or more (the secant from one
+    // side of the bracket converges so while the bracket's far end stays where the first step
+    // overshot; breaking that off for the secant through the bracket's ends, or its bisection,
+    // cost KPEC cases up to four extra solves).
+    const bool converging = std::abs(residual) <= 0.25 * older_abs_residual;
+    older_abs_residual = have_last ? std::abs(last_residual) : older_abs_residual;
     have_last = true;
     last_z = z;
     last_residual = residual;
@@ -270,7 +278,7 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
       // F_z (mbench_a22_kpec c2: 7.7e6 N/mm near the answer, 4 times the first bracket's
       // secant) keeps its secant bounded and its proposals.
       const double width = hi - lo;
-      const bool stalling = width > 0.5 * width_before;
+      const bool stalling = width > 0.5 * width_before && !converging;
       const double secant = (f_hi - f_lo) / width;
       min_secant = std::min(min_secant, secant);
       const bool jump = secant > 4.0 * std::max(slope_lo, slope_hi) && secant > 20.0 * min_secant;

@@ -286,3 +286,41 @@ TEST(VerticalForce, StepsBelowEpsFarFromTheTargetAreNotConverged) {
 
 }  // namespace
 }  // namespace rollcontact::wheelrail
+
+namespace rollcontact::wheelrail {
+namespace {
+
+// A patch that stiffens more slowly than Hertz (F_n ∝ pen^1.2 or pen^1.3: the power-law model's
+// slope is too large, its steps fall short): the iterates after a first estimate beyond the
+// answer approach it from below while the bracket's far end stays at that first estimate. The
+// bracket does not halve, yet every step removes most of the residual; breaking that off for the
+// secant through the bracket's ends, bisected when it lands next to an end, took 9 solves where
+// 4–5 do (KPEC sweeps: up to four extra solves per case).
+TEST(VerticalForce, OneSidedConvergenceIsNotBrokenOff) {
+  VerticalForceSettings st;
+  st.target_N = kTarget;
+  st.tolerance = 1e-5;
+  for (const double exponent : {1.2, 1.3})
+    for (const double beyond : {0.003, 0.01, 0.03}) {  // first estimate, past first contact [mm]
+      const auto soft = [&](double z) {
+        HeightSample h;
+        h.z_mm = z;
+        const double pen = std::max(0.0, (z - kZ0) * std::cos(kDelta));
+        const double fn = kC * std::pow(pen, exponent);
+        h.fz_N = fn * std::cos(kDelta);
+        h.patches.push_back({pen, kDelta, fn, 0.0});
+        return h;
+      };
+      int solves = 0;
+      const VerticalForceResult r = solve_vertical_force(st, kZ0, kZ0 + beyond, [&](double z) {
+        ++solves;
+        return soft(z);
+      });
+      ASSERT_TRUE(r.converged) << r.message;
+      EXPECT_NEAR(soft(r.z_mm).fz_N, kTarget, 1e-5 * kTarget);
+      EXPECT_LE(solves, 6) << "F_n ~ pen^" << exponent << ", first estimate " << beyond << " mm in";
+    }
+}
+
+}  // namespace
+}  // namespace rollcontact::wheelrail
