@@ -109,12 +109,13 @@ void trace_row(const PlacedProfiles& prof, const WheelsetPose& pose, const Conta
   if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) return;
   double t_wheel = t_rail;
   CurveHint hint;  // the wheel profile segment, carried along the row
-  // The last two elements' solutions: the next one starts from their linear extrapolation (the
-  // wheel's distance varies like x²/2R along a row: the start is then off by dx²/R, ~5e-4 mm,
-  // instead of x·dx/R, and Newton needs one evaluation fewer).
-  int known = 0;  // consecutive elements solved, up to 2
-  double t_last = 0.0, u_last = 0.0;
-  std::size_t segment_last = hint.segment;
+  // The last three elements' solutions on one profile segment: the next one starts from their
+  // quadratic extrapolation. The wheel's distance varies like x²/2R along a row, so a linear
+  // extrapolation from two is off by dx²/R (~5e-4 mm) and Newton needs a second evaluation to
+  // confirm its step; the quadratic one is off by the third difference (~1e-9 mm at DX 0.5 mm),
+  // below the convergence step, and one evaluation does.
+  int known = 0;  // consecutive elements solved on segment hint.segment, up to 3
+  double t_hist[3] = {0.0, 0.0, 0.0}, u_hist[3] = {0.0, 0.0, 0.0};  // [0]: the latest
   for (int i = 0; i < mx; ++i) {
     const Vec3 point = on_line + (dx_mm * (ix0 + i) - origin_x_mm) * f.ex;
     double t_rail_here = t_rail;
@@ -123,22 +124,27 @@ void trace_row(const PlacedProfiles& prof, const WheelsetPose& pose, const Conta
       continue;
     }
     double t_start = t_wheel;
-    if (known == 2 && hint.segment == segment_last) {
-      t_start = 2.0 * t_wheel - t_last;
-      const double u = hint.t;
-      hint.t = 2.0 * hint.t - u_last;
-      u_last = u;
-    } else {
-      u_last = hint.t;
+    if (known == 3) {
+      t_start = 3.0 * (t_hist[0] - t_hist[1]) + t_hist[2];
+      hint.t = 3.0 * (u_hist[0] - u_hist[1]) + u_hist[2];
+    } else if (known == 2) {
+      t_start = 2.0 * t_hist[0] - t_hist[1];
+      hint.t = 2.0 * u_hist[0] - u_hist[1];
     }
-    t_last = t_wheel;
-    segment_last = hint.segment;
+    const std::size_t segment_before = hint.segment;
     if (!wheel_surface_along(prof, pose, point, f.en, t_start, t_wheel, &hint)) {
       t_wheel = t_rail_here;
       known = 0;
       continue;
     }
-    known = std::min(known + 1, 2);
+    if (hint.segment != segment_before) known = 0;
+    t_hist[2] = t_hist[1];
+    t_hist[1] = t_hist[0];
+    t_hist[0] = t_wheel;
+    u_hist[2] = u_hist[1];
+    u_hist[1] = u_hist[0];
+    u_hist[0] = hint.t;
+    known = std::min(known + 1, 3);
     visit(i, point, t_rail_here, t_wheel);
   }
 }
