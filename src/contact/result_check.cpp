@@ -20,10 +20,25 @@ std::string first_in(std::initializer_list<Named> values) {
   return {};
 }
 
+/// True when every value is finite: v·0 is 0 for finite v and NaN for ±inf and NaN, so the sums
+/// are 0 exactly when all are finite — branch-free, four independent sums (the check runs on
+/// every field of every solve: element by element with std::isfinite it cost 3 % of the
+/// instructions of a KPEC sweep).
+bool all_finite(const std::vector<double>& field) {
+  double probe[4] = {0.0, 0.0, 0.0, 0.0};
+  const std::size_t n = field.size(), blocks = n / 4 * 4;
+  for (std::size_t i = 0; i < blocks; i += 4)
+    for (std::size_t j = 0; j < 4; ++j) probe[j] += field[i + j] * 0.0;
+  for (std::size_t i = blocks; i < n; ++i) probe[0] += field[i] * 0.0;
+  return probe[0] + probe[1] + probe[2] + probe[3] == 0.0;
+}
+
 std::string first_in(std::initializer_list<NamedField> fields) {
-  for (const auto& [name, field] : fields)
+  for (const auto& [name, field] : fields) {
+    if (all_finite(*field)) continue;
     for (std::size_t i = 0; i < field->size(); ++i)
       if (!std::isfinite((*field)[i])) return fmt::format("{}[{}] = {}", name, i, (*field)[i]);
+  }
   return {};
 }
 

@@ -53,6 +53,15 @@ TEST(FiniteResults, FirstNonFiniteNamesTheTotalOrTheElement) {
   s.subsurface.resize(1);
   s.subsurface[0].szz = {0.0, std::nan("")};
   EXPECT_EQ(first_non_finite(s), "subsurface szz[1] = nan");
+  s.subsurface.clear();
+  // Every position of a longer field is checked: in the blocks of four and in the remainder.
+  for (const std::size_t at : {0U, 3U, 4U, 8U, 9U}) {
+    s.ux.assign(10, 1e300);
+    s.ux[at] = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(first_non_finite(s), "ux[" + std::to_string(at) + "] = inf");
+  }
+  s.ux.assign(10, -1e300);  // large but finite
+  EXPECT_EQ(first_non_finite(s), "");
 }
 
 TEST(FiniteResults, ASolvedCaseIsFiniteAndConverged) {
