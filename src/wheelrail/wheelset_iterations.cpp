@@ -78,13 +78,13 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   // From the previous cases' approaches beyond first contact, each scaled by Hertz's F^(2/3)
   // to this force and extrapolated from the last two (wheelrail-advanced.md §6.3: not when the
   // force changed by more than a factor 5): with I ≥ 1, and with I = 0 in a case that continues
-  // a sequence with pressures from the half-space theory — a start, not the answer: F_z(z) is
-  // continuous there, so the answer is the same within the tolerance. KPEC's and ANALYN's F_z
-  // jumps where their equivalent ellipse changes, and where the answer is a bracket around such
-  // a jump the start decides its side (mbench_a22_kpec c2): those keep CONTACT's Hertz start.
+  // a sequence — a start, not the answer: where F_z(z) is continuous the answer is the same
+  // within the tolerance. KPEC's and ANALYN's F_z jumps where their equivalent ellipse changes,
+  // and where the answer is a bracket around such a jump the start decides its side: a KPEC
+  // state with a second lobe is therefore not remembered (solve_case), so that the cases
+  // after it start from Hertz as CONTACT does (docs/decisions.md).
   if (const std::optional<double> a = approach_from_previous_cases(st.target_N);
-      a && k <= 0.0 &&
-      (p.estimate_from_previous_case || (settings.continuous_force && !p.first_of_sequence)))
+      a && k <= 0.0 && (p.estimate_from_previous_case || !p.first_of_sequence))
     z1 = std::max(z0 + *a, z0 + 1e-3);
   if (k > 0.0) {
     // The massless rail with z_ws prescribed: the Hertz force C·pen^1.5 (C from 10 kN) against

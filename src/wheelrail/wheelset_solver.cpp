@@ -262,11 +262,15 @@ WheelRailSolution WheelsetSolver::Impl::solve_case(const model::WheelRailProblem
   // such a state (mbench_a22_kpec c2 does where the deepest point changes lobes) and leave it.
   if (p.patch.normal.pressure == model::PressureModel::Kpec)
     for (const WheelRailPatch& w : result.patches)
-      if (w.solution.solver.kpec_rows_beyond_interpenetration > 0)
+      if (w.solution.solver.kpec_rows_beyond_interpenetration > 0) {
+        // Not a start for the next case of a sweep: near KPEC's jumps the start decides the
+        // state, and the next case must not inherit this one (solve_for_height).
+        previous_approaches.clear();
         unvalidated(p,
                     "KPEC (B=5) where the gap interpenetrates beyond the equivalent ellipse (a "
                     "second lobe; mbench_a22_kpec case 1 differs)",
                     result.warnings);
+      }
   return result;
 }
 

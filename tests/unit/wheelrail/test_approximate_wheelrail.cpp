@@ -77,6 +77,33 @@ TEST(ApproximateWheelRail, MbenchKpecCasesAgreeWithContact) {
   }
 }
 
+// KPEC continues a sweep from the previous cases' approaches, but not from a state with a second
+// lobe (case 1, solved here through the API): where F_z(z) jumps the start decides which state
+// the iteration ends in, and the next case (y_ws 0.5 mm) must not inherit the two-lobe one.
+TEST(ApproximateWheelRail, ASecondLobeStateIsNotASweepStart) {
+  REQUIRE_EXAMPLES();
+  const std::filesystem::path dir{ROLLCONTACT_EXAMPLES_DIR};
+  const auto cases = format::read_input_cases(dir / "mbench_a22_kpec.inp");
+  auto problem = [&](std::size_t k) {
+    model::WheelRailProblem p =
+        format::to_wheelrail_problem(std::get<format::WheelRailRecord>(cases.at(k)));
+    p.validated_only = false;
+    return p;
+  };
+  WheelsetSolver sweep;
+  const WheelRailSolution first = sweep.solve(problem(0));
+  ASSERT_TRUE(first.converged) << first.message;
+  ASSERT_GT(first.patches.at(0).solution.solver.kpec_rows_beyond_interpenetration, 0);
+  const WheelRailSolution next = sweep.solve(problem(1));
+  model::WheelRailProblem alone = problem(1);
+  alone.first_of_sequence = true;
+  const WheelRailSolution fresh = WheelsetSolver().solve(alone);
+  ASSERT_GE(next.trace.size(), 2U);
+  ASSERT_GE(fresh.trace.size(), 2U);
+  EXPECT_EQ(next.trace[1].z_ws_mm, fresh.trace[1].z_ws_mm);  // Hertz's estimate in both
+  EXPECT_NEAR(next.force_tr.z, fresh.force_tr.z, 10.0);
+}
+
 TEST(ApproximateWheelRail, CasesThatDifferAreRefused) {
   REQUIRE_EXAMPLES();
   const std::filesystem::path dir{ROLLCONTACT_EXAMPLES_DIR};
