@@ -70,12 +70,32 @@ void fill_locus(const model::WheelRailProblem& p, const PlacedProfiles& prof,
       s.wheel_points.push_back(
           wheel.at_y(std::min(wheel.y_min() + step * static_cast<double>(k), wheel.y_max())));
     s.wheel_step_mm = prof.wheel_surface() != nullptr ? 0.0 : step;
+    s.wheel_radius_max_mm = 0.0;
+    for (const CurvePoint& w : s.wheel_points)
+      if (w.found) s.wheel_radius_max_mm = std::max(s.wheel_radius_max_mm, std::abs(r0 + w.z));
+  }
+  // Only samples whose locus point can reach the lateral grid [y_0, y_{n−1}] count: a point lies
+  // within `reach` of c_y + R11·(y_off + yp) (|x| ≤ r_nom/2, 0 ≤ q_z ≤ r), and a sample outside
+  // that band on either side forms segments with its neighbours there that miss the grid. Two
+  // samples more on each side; the whole profile for a sliced wheel (its points are searched).
+  std::size_t k_begin = 0, k_end = samples;
+  if (prof.wheel_surface() == nullptr && R.r[1][1] > 0.5 && n > 0) {
+    const double reach = std::abs(R.r[1][0]) * 0.5 * r_nom +
+                         std::abs(R.r[1][2]) * s.wheel_radius_max_mm + 2.0 * g.dy_mm;
+    const double c_y = pose.wheel_centre.y + R.r[1][1] * y_off;
+    const double yp_lo = (g.y(0) - reach - c_y) / R.r[1][1];  // centre(yp) + reach ≥ y_0
+    const double yp_hi = (g.y(n - 1) + reach - c_y) / R.r[1][1];
+    const double k_lo = std::floor((yp_lo - wheel.y_min()) / step) - 2.0;
+    const double k_hi = std::ceil((yp_hi - wheel.y_min()) / step) + 2.0;
+    if (k_lo > 0.0) k_begin = std::min(static_cast<std::size_t>(k_lo), samples);
+    if (k_hi < static_cast<double>(samples))
+      k_end = k_hi < 0.0 ? 0 : static_cast<std::size_t>(k_hi);
   }
   Vec3 prev{};
   double prev_yp = 0.0;
   bool have_prev = false;
   LocusScanSections scan(locus_scan_angles());  // a sliced wheel's scanned cross-sections
-  for (std::size_t k = 0; k <= samples; ++k) {
+  for (std::size_t k = k_begin; k <= k_end; ++k) {
     const double yp = std::min(wheel.y_min() + step * static_cast<double>(k), wheel.y_max());
     const CurvePoint& w = s.wheel_points[k];
     if (!w.found) continue;

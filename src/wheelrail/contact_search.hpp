@@ -76,6 +76,7 @@ struct GapSamples {
   /// a sliced wheel's cross-section changes with its rotation).
   std::vector<CurvePoint> wheel_points;
   double wheel_step_mm = 0.0;
+  double wheel_radius_max_mm = 0.0;  ///< max |r0 + z| over wheel_points [mm]
   /// A sliced wheel: its pose at z_ws = 0 and, per lateral sample, its height along x there
   /// (the reference point's weights, sliced_weights.hpp). Filled by search_contact for the
   /// samples that interpenetrate, when first needed; empty for a plain wheel.
