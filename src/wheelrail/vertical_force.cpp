@@ -302,152 +302,204 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   return res;
 }
 
+namespace {
+
+/// The split iteration (solve_vertical_force_split): rounds of normal-only estimates, each
+/// started from and checked by a full solve. It keeps the trace, the last full solve and the
+/// tangential shares F_s/F_n per patch of the last two full solves.
+class SplitIteration {
+ public:
+  SplitIteration(const VerticalForceSettings& st, double start_mm,
+                 const std::function<HeightSample(double)>& full_at,
+                 const NormalOnlySolve& normal_at,
+                 const std::function<HeightSample(double)>* rough_first_at)
+      : st_(st),
+        start_mm_(start_mm),
+        full_at_(full_at),
+        normal_at_(normal_at),
+        rough_first_at_(rough_first_at),
+        f_tol_(force_tolerance(st)),
+        k_(st.spring_N_per_mm) {
+    res_.trace.push_back({0, start_mm, 0.0, 0.0});
+  }
+
+  VerticalForceResult run(double first_guess_mm);
+
+ private:
+  static constexpr int kMaxRounds = 6;
+  enum class Round { converged, decided, next, stop };
+
+  /// F_z + k·z − target of the last full solve, at its height z [N].
+  double residual(double z) const { return s_.fz_N + k_ * z - st_.target_N; }
+  bool on_target(double z) const { return std::abs(residual(z)) < f_tol_; }
+  void full(double z, bool rough = false);
+  std::vector<double> ratios_at(double z) const;
+  void append(const VerticalForceResult& part);
+  Round round(double& z, std::vector<HeightSample>& samples);
+  bool decided_at_jump(const VerticalForceResult& estimate);
+
+  const VerticalForceSettings& st_;
+  const double start_mm_;
+  const std::function<HeightSample(double)>& full_at_;
+  const NormalOnlySolve& normal_at_;
+  const std::function<HeightSample(double)>* rough_first_at_;
+  const double f_tol_, k_;
+  VerticalForceResult res_;
+  int iteration_ = 0;
+  HeightSample s_;      ///< the last full solve
+  double guess_ = 0.0;  ///< the next round's first estimate (the last full solve's model)
+  // F_s/F_n per patch at the last two full solves (heights z_full_, z_before_): the ratios
+  // change with z (more of the patch slides as it is loaded), and taking them fixed from the
+  // last full solve made the rounds converge only linearly (each removing about three quarters
+  // of the error, 8–10 solves per case on the benchmark's flange contacts); extrapolated
+  // linearly in z from the last two full solves they converge in fewer rounds.
+  std::vector<double> fs_ratio_, ratio_before_;
+  double z_full_ = 0.0, z_before_ = 0.0;
+};
+
+void SplitIteration::append(const VerticalForceResult& part) {
+  for (std::size_t j = 1; j < part.trace.size(); ++j) {
+    VerticalForceStep step = part.trace[j];
+    step.iteration = ++iteration_;
+    res_.trace.push_back(step);
+  }
+}
+
+void SplitIteration::full(double z, bool rough) {
+  s_ = rough ? (*rough_first_at_)(z) : full_at_(z);
+  const PowerLaw model(s_, k_);
+  double model_f = 0.0, slope = 0.0;
+  if (model.usable()) model.eval(z, model_f, slope);
+  res_.trace.push_back({++iteration_, z, s_.fz_N, slope});
+  res_.z_mm = z;
+  ratio_before_ = std::move(fs_ratio_);
+  z_before_ = z_full_;
+  z_full_ = z;
+  fs_ratio_.clear();
+  for (const PatchForceSample& p : s_.patches)
+    fs_ratio_.push_back(p.fn_N > 0.0 ? p.fs_N / p.fn_N : 0.0);
+  // The next estimate starts from this full solve's power-law model.
+  guess_ = model.usable() ? model.solve(st_.target_N, z) : z;
+}
+
+std::vector<double> SplitIteration::ratios_at(double z) const {
+  if (ratio_before_.size() != fs_ratio_.size() || !(std::abs(z_full_ - z_before_) > 0.0))
+    return fs_ratio_;
+  std::vector<double> r = fs_ratio_;
+  const double t = (z - z_full_) / (z_full_ - z_before_);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    // Within the range the two full solves span, and a little beyond: a change of sign of the
+    // slope between rounds must not throw the estimate far away.
+    r[i] += std::clamp(t, -1.0, 1.0) * (fs_ratio_[i] - ratio_before_[i]);
+  }
+  return r;
+}
+
+/// Estimates that end on a jump of F_z: full solves at its two sides decide when they straddle
+/// the target too (the tangential share rarely moves a jump). True when that decided the result.
+bool SplitIteration::decided_at_jump(const VerticalForceResult& estimate) {
+  if (!std::isfinite(estimate.jump_lo_mm)) return false;
+  const double lo = estimate.jump_lo_mm, hi = estimate.jump_hi_mm;
+  full(lo);
+  const double f_lo = residual(lo);
+  full(hi);
+  const double f_hi = residual(hi);
+  if (!(f_lo < 0.0 && f_hi >= 0.0)) return false;
+  const auto again = [&](double z) {
+    full(z);
+    return residual(z);
+  };
+  end_on_narrow_bracket(st_, f_tol_, {lo, hi, f_lo, f_hi}, f_hi, again, res_);
+  return true;
+}
+
+/// One round: normal estimates from the last full solve's model to the target with the
+/// extrapolated shares, then a full solve at their height (and one at the share-corrected
+/// height). `z` is where the full solves stand; `samples` receives the round's estimates.
+SplitIteration::Round SplitIteration::round(double& z, std::vector<HeightSample>& samples) {
+  samples.clear();
+  // The full solve the round starts from is a sample of its estimates (the same pressure, and
+  // F_z with its own share) where its patches are planar: the estimates' secant starts there.
+  const bool full_is_estimate =
+      std::abs(planar_fz(s_, fs_ratio_) - s_.fz_N) <= 1e-9 * std::max(1.0, std::abs(s_.fz_N));
+  const HeightSample* known = full_is_estimate && st_.continuous_force ? &s_ : nullptr;
+  const VerticalForceResult estimate = solve_vertical_force(
+      st_, start_mm_, guess_,
+      [&](double zz) {
+        samples.push_back(normal_at_(zz, ratios_at(zz)));
+        return samples.back();
+      },
+      known);
+  append(estimate);
+  if (!estimate.converged) {
+    if (decided_at_jump(estimate)) return Round::decided;
+    // Else the full solves start there.
+    if (std::isfinite(estimate.z_mm) && estimate.z_mm > start_mm_) z = estimate.z_mm;
+    return Round::stop;
+  }
+  if (iteration_ >= st_.max_iterations) return Round::stop;
+  const bool same_height = std::abs(estimate.z_mm - z) < st_.tolerance;
+  z = estimate.z_mm;
+  full(z);
+  if (!std::isfinite(s_.fz_N)) return Round::stop;
+  if (on_target(z)) return Round::converged;
+  // The full solve's own tangential share moved F_z off the target (flange contacts: tens of
+  // newtons): where the round's estimates give F_n(z) precisely enough, the full solve goes
+  // straight to the corrected height instead of estimating again.
+  if (const std::optional<double> corrected =
+          st_.continuous_force ? share_corrected_height(samples, s_, st_.target_N, k_, f_tol_)
+                               : std::nullopt;
+      corrected && iteration_ < st_.max_iterations) {
+    z = *corrected;
+    full(z);
+    if (!std::isfinite(s_.fz_N)) return Round::stop;
+    if (on_target(z)) return Round::converged;
+  }
+  // The tangential share no longer moves the estimate, but the full solve is still off: only
+  // full solves can close the gap (mbench_a22_kpec c2: 60 N at the same z_ws, F_z rising by
+  // 7.7e6 N/mm there).
+  return same_height ? Round::stop : Round::next;
+}
+
+VerticalForceResult SplitIteration::run(double first_guess_mm) {
+  double z = first_guess_mm;
+  guess_ = first_guess_mm;
+  // The tangential share of F_z is known only from a full solve.
+  full(z, rough_first_at_ != nullptr);
+  if (!std::isfinite(s_.fz_N)) {
+    res_.message = fmt::format("the vertical force is not finite at z_ws = {:g} mm", z);
+    return res_;
+  }
+  if (on_target(z)) {
+    if (rough_first_at_ != nullptr) full(z);  // the answer stands only from a solve at EPS
+    if (on_target(z)) {
+      res_.converged = true;
+      return res_;
+    }
+  }
+  std::vector<HeightSample> round_samples;  // the normal estimates of the current round
+  for (int r = 0; r < kMaxRounds; ++r) {
+    const Round outcome = round(z, round_samples);
+    if (outcome == Round::converged) res_.converged = true;
+    if (outcome == Round::converged || outcome == Round::decided) return res_;
+    if (outcome == Round::stop) break;
+  }
+  // Fall back on full solves from the last height.
+  const VerticalForceResult plain = solve_vertical_force(st_, start_mm_, z, full_at_);
+  append(plain);
+  res_.z_mm = plain.z_mm;
+  res_.converged = plain.converged;
+  res_.message = plain.message;
+  return res_;
+}
+
+}  // namespace
+
 VerticalForceResult solve_vertical_force_split(
     const VerticalForceSettings& st, double start_mm, double first_guess_mm,
     const std::function<HeightSample(double)>& full_at, const NormalOnlySolve& normal_at,
     const std::function<HeightSample(double)>* rough_first_at) {
-  constexpr int kMaxRounds = 6;
-  VerticalForceResult res;
-  res.trace.push_back({0, start_mm, 0.0, 0.0});
-  const double f_tol = force_tolerance(st);
-  const double k = st.spring_N_per_mm;
-  int iteration = 0;
-  auto append = [&](const VerticalForceResult& part) {
-    for (std::size_t j = 1; j < part.trace.size(); ++j) {
-      VerticalForceStep step = part.trace[j];
-      step.iteration = ++iteration;
-      res.trace.push_back(step);
-    }
-  };
-  double z = first_guess_mm, guess = first_guess_mm;
-  // F_s/F_n per patch at the last two full solves (heights z_full, z_before): the ratios change
-  // with z (more of the patch slides as it is loaded), and taking them fixed from the last full
-  // solve made the rounds converge only linearly (each removing about three quarters of the
-  // error, 8–10 solves per case on the benchmark's flange contacts); extrapolated linearly in z
-  // from the last two full solves they converge in fewer rounds.
-  std::vector<double> fs_ratio, ratio_before;
-  double z_full = 0.0, z_before = 0.0;
-  HeightSample s;
-  auto full = [&](double zz, bool rough = false) {
-    s = rough ? (*rough_first_at)(zz) : full_at(zz);
-    const PowerLaw model(s, k);
-    double model_f = 0.0, slope = 0.0;
-    if (model.usable()) model.eval(zz, model_f, slope);
-    res.trace.push_back({++iteration, zz, s.fz_N, slope});
-    res.z_mm = zz;
-    ratio_before = std::move(fs_ratio);
-    z_before = z_full;
-    z_full = zz;
-    fs_ratio.clear();
-    for (const PatchForceSample& p : s.patches)
-      fs_ratio.push_back(p.fn_N > 0.0 ? p.fs_N / p.fn_N : 0.0);
-    // The next estimate starts from this full solve's power-law model.
-    guess = model.usable() ? model.solve(st.target_N, zz) : zz;
-  };
-  auto ratios_at = [&](double zz) {
-    if (ratio_before.size() != fs_ratio.size() || !(std::abs(z_full - z_before) > 0.0))
-      return fs_ratio;
-    std::vector<double> r = fs_ratio;
-    const double t = (zz - z_full) / (z_full - z_before);
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      // Within the range the two full solves span, and a little beyond: a change of sign of
-      // the slope between rounds must not throw the estimate far away.
-      const double step = std::clamp(t, -1.0, 1.0) * (fs_ratio[i] - ratio_before[i]);
-      r[i] += step;
-    }
-    return r;
-  };
-  // The tangential share of F_z is known only from a full solve.
-  full(z, rough_first_at != nullptr);
-  if (!std::isfinite(s.fz_N)) {
-    res.message = fmt::format("the vertical force is not finite at z_ws = {:g} mm", z);
-    return res;
-  }
-  if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
-    if (rough_first_at == nullptr) {
-      res.converged = true;
-      return res;
-    }
-    full(z);  // the answer stands only from a solve at the case's tolerance
-    if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
-      res.converged = true;
-      return res;
-    }
-  }
-  std::vector<HeightSample> round_samples;  // the normal estimates of the current round
-  for (int round = 0; round < kMaxRounds; ++round) {
-    round_samples.clear();
-    // The full solve the round starts from is a sample of its estimates (the same pressure, and
-    // F_z with its own share) where its patches are planar: the estimates' secant starts there.
-    const bool full_is_estimate =
-        std::abs(planar_fz(s, fs_ratio) - s.fz_N) <= 1e-9 * std::max(1.0, std::abs(s.fz_N));
-    const HeightSample* known = full_is_estimate && st.continuous_force ? &s : nullptr;
-    const VerticalForceResult estimate = solve_vertical_force(
-        st, start_mm, guess,
-        [&](double zz) {
-          round_samples.push_back(normal_at(zz, ratios_at(zz)));
-          return round_samples.back();
-        },
-        known);
-    append(estimate);
-    if (!estimate.converged) {
-      // Estimates that end on a jump of F_z: full solves at its two sides decide when they
-      // straddle the target too (the tangential share rarely moves a jump); else the full
-      // solves start there.
-      if (std::isfinite(estimate.jump_lo_mm)) {
-        const double lo = estimate.jump_lo_mm, hi = estimate.jump_hi_mm;
-        full(lo);
-        const double f_lo = s.fz_N + k * lo - st.target_N;
-        full(hi);
-        const double f_hi = s.fz_N + k * hi - st.target_N;
-        if (f_lo < 0.0 && f_hi >= 0.0) {
-          const auto again = [&](double zz) {
-            full(zz);
-            return s.fz_N + k * zz - st.target_N;
-          };
-          end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi}, f_hi, again, res);
-          return res;
-        }
-      }
-      if (std::isfinite(estimate.z_mm) && estimate.z_mm > start_mm) z = estimate.z_mm;
-      break;
-    }
-    if (iteration >= st.max_iterations) break;
-    const bool same_height = std::abs(estimate.z_mm - z) < st.tolerance;
-    z = estimate.z_mm;
-    full(z);
-    if (!std::isfinite(s.fz_N)) break;
-    if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
-      res.converged = true;
-      return res;
-    }
-    // The full solve's own tangential share moved F_z off the target (flange contacts: tens of
-    // newtons): where the round's estimates give F_n(z) precisely enough, the full solve goes
-    // straight to the corrected height instead of estimating again.
-    if (const std::optional<double> corrected =
-            st.continuous_force ? share_corrected_height(round_samples, s, st.target_N, k, f_tol)
-                                : std::nullopt;
-        corrected && iteration < st.max_iterations) {
-      z = *corrected;
-      full(z);
-      if (!std::isfinite(s.fz_N)) break;
-      if (std::abs(s.fz_N + k * z - st.target_N) < f_tol) {
-        res.converged = true;
-        return res;
-      }
-    }
-    // The tangential share no longer moves the estimate, but the full solve is still off: only
-    // full solves can close the gap (mbench_a22_kpec c2: 60 N at the same z_ws, F_z rising by
-    // 7.7e6 N/mm there).
-    if (same_height) break;
-  }
-  // Fall back on full solves from the last height.
-  const VerticalForceResult plain = solve_vertical_force(st, start_mm, z, full_at);
-  append(plain);
-  res.z_mm = plain.z_mm;
-  res.converged = plain.converged;
-  res.message = plain.message;
-  return res;
+  return SplitIteration(st, start_mm, full_at, normal_at, rough_first_at).run(first_guess_mm);
 }
 
 }  // namespace rollcontact::wheelrail
