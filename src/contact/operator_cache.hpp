@@ -158,8 +158,9 @@ class OperatorCache {
 
   /// The grid's normal kernel C_nn / G from the kept kernels (approximate pressures that need
   /// the displacement at one point: KPEC's level; no operator set is built for them).
-  elastic::Kernel normal_kernel(const Grid& grid, const CombinedMaterial& material) {
-    return kernels_.kernel(elastic::Component::nn, grid, material);
+  /// At least the grid's size, valid until the next call (elastic::KernelLibrary::covering).
+  const elastic::Kernel& normal_kernel(const Grid& grid, const CombinedMaterial& material) {
+    return kernels_.covering(elastic::Component::nn, grid, material);
   }
 
   /// Operator sets assembled so far and held now, all kinds together (for tests and reports).

@@ -56,6 +56,25 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
   return std::move(kernels({c}, grid, m, shift_x, shift_y).front());
 }
 
+const Kernel* KernelLibrary::find_covering(Component c, const Grid& grid,
+                                           const CombinedMaterial& m) {
+  if (m.viscoelastic() || m.table) return nullptr;  // never kept (kernels())
+  for (auto it = entries_.begin(); it != entries_.end(); ++it)
+    if (matches(*it, c, grid, m, 0.0, 0.0) && it->kernel.mx() >= grid.mx &&
+        it->kernel.my() >= grid.my) {
+      entries_.splice(entries_.begin(), entries_, it);
+      return &entries_.front().kernel;
+    }
+  return nullptr;
+}
+
+const Kernel& KernelLibrary::covering(Component c, const Grid& grid, const CombinedMaterial& m) {
+  if (const Kernel* kept = find_covering(c, grid, m)) return *kept;
+  scratch_ = kernel(c, grid, m);  // tabulated, and kept unless too large
+  if (const Kernel* kept = find_covering(c, grid, m)) return *kept;
+  return scratch_;
+}
+
 bool KernelLibrary::matches(const Entry& e, Component c, const Grid& grid,
                             const CombinedMaterial& m, double shift_x, double shift_y) {
   return e.c == c && e.dx == grid.dx && e.dy == grid.dy && e.g == m.g && e.nu == m.nu &&

@@ -31,6 +31,10 @@ class KernelLibrary {
   /// Equal to make_kernel(c, grid, material, shift_x, shift_y).
   Kernel kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                 double shift_x = 0.0, double shift_y = 0.0);
+  /// A kernel of component c for the grid's elements and material (no rolling shift) with at
+  /// least the grid's MX, MY: at(dix, diy) for |dix| < MX, |diy| < MY equals make_kernel(c, grid,
+  /// m)'s value for value, without the copy that kernel() cuts out. Valid until the next call.
+  const Kernel& covering(Component c, const Grid& grid, const CombinedMaterial& m);
   /// Equal to make_kernels(cs, …): the components not kept are tabulated together (shared
   /// logarithms, elastic/influence.hpp).
   std::vector<Kernel> kernels(const std::vector<Component>& cs, const Grid& grid,
@@ -54,7 +58,12 @@ class KernelLibrary {
   std::optional<Kernel> cut_kept(Component c, const Grid& grid, const CombinedMaterial& m,
                                  double shift_x, double shift_y, Grid& big);
 
+  /// The kept kernel of (c, grid's elements, m, no shift) with at least the grid's size, if any
+  /// (moved to the front of entries_).
+  const Kernel* find_covering(Component c, const Grid& grid, const CombinedMaterial& m);
+
   std::size_t budget_bytes_, kept_bytes_ = 0;
+  Kernel scratch_;            ///< covering()'s answer where none is kept
   std::list<Entry> entries_;  ///< most recently used first
   std::size_t computed_ = 0;
 };

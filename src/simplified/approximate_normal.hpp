@@ -27,7 +27,8 @@ struct ApproximateNormal {
 /// that reproduces the Hertz ellipse, semi-elliptic pressures per row scaled so that the normal
 /// displacement at the deepest point equals pen_total. `h_total` has grid.size() values [mm]
 /// (values ≥ 1e29: excluded); `material` gives E* for the Hertz solution, `normal_kernel` (the
-/// grid's C_nn, divided by G: elastic::make_kernel or a kept copy) the normal displacement.
+/// grid's C_nn, divided by G: elastic::make_kernel, or a kept kernel of the same elements at
+/// least the grid's size, elastic::KernelLibrary::covering) the normal displacement.
 ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h_total,
                                 const CombinedMaterial& material,
                                 const elastic::Kernel& normal_kernel);

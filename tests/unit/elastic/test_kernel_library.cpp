@@ -109,3 +109,26 @@ TEST(KernelLibrary, ShiftsOfWholeElementsAreTheUnshiftedKernelReadOffsetsOn) {
 
 }  // namespace
 }  // namespace rollcontact::elastic
+
+namespace rollcontact::elastic {
+namespace {
+
+TEST(KernelLibrary, CoveringKernelsReadLikeTheGridsOwn) {
+  const CombinedMaterial m{.g = 82000.0, .nu = 0.28, .k = 0.0};
+  KernelLibrary lib;
+  lib.kernel(Component::nn, grid(30, 50), m);  // kept at 31 × 51
+  for (auto [mx, my] : {std::pair{24, 40}, std::pair{30, 50}, std::pair{35, 20}}) {
+    const Kernel& c = lib.covering(Component::nn, grid(mx, my), m);
+    ASSERT_GE(c.mx(), mx);
+    ASSERT_GE(c.my(), my);
+    const Kernel own = make_kernel(Component::nn, grid(mx, my), m);
+    for (int diy = -(my - 1); diy <= my - 1; ++diy)
+      for (int dix = -(mx - 1); dix <= mx - 1; ++dix)
+        ASSERT_EQ(c.at(dix, diy), own.at(dix, diy))
+            << mx << "x" << my << " at " << dix << ", " << diy;
+  }
+  EXPECT_EQ(lib.computed(), 2u);  // 35 × 20 outgrew the kept kernel in x: tabulated once more
+}
+
+}  // namespace
+}  // namespace rollcontact::elastic
