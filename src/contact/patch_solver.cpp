@@ -1029,6 +1029,16 @@ const Solution* CaseSolver::map_sequence(model::TangentialKind kind) {
       problem_.sequence.continue_previous && st_.previous && !st_.previous->pn.empty()
           ? &*st_.previous
           : nullptr;
+  // Steady rolling by the simplified theory, with pressures that need no normal iteration and a
+  // friction law without memory, reads nothing of the previous solution (no start, no previous
+  // time step): its fields are not mapped (every solve of a KPEC sweep mapped eight fields).
+  const bool reads_previous =
+      !(simplified_ && prescribed_ && kind == model::TangentialKind::SteadyRolling &&
+        !friction_->velocity_dependent() && !friction_->temperature_dependent());
+  if (!reads_previous) {
+    prev_ = PreviousFields{};
+    return prev;
+  }
   prev_ = map_previous(prev, grid_, problem_.sequence.origin_x_mm - st_.previous_origin_x,
                        problem_.sequence.origin_y_mm - st_.previous_origin_y);
   // Steady rolling remembers the previous solution only as a start (transient rolling and
