@@ -23,17 +23,20 @@ std::vector<double> undeformed_distance(const PlacedProfiles& prof, const Wheels
   std::vector<double> h(static_cast<std::size_t>(mx) * static_cast<std::size_t>(my), kFarAway);
   rail_n.assign(h.size(), std::numeric_limits<double>::quiet_NaN());
   double h_min = kFarAway;
+  RowStart carry;
   for (int j = 0; j < my; ++j) {
     const Vec3 on_line = f.origin + (s.ds_mm * (s.iy0 + j) - s.origin_y_mm) * f.es;
-    trace_row(prof, pose, f, on_line, mx, s.dx_mm, s.ix0, s.origin_x_mm,
-              [&](int i, Vec3, double t_rail, double t_wheel) {
-                const double v = t_rail - t_wheel;
-                const std::size_t e = static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) +
-                                      static_cast<std::size_t>(i);
-                h[e] = v;
-                rail_n[e] = t_rail;
-                h_min = std::min(h_min, v);
-              });
+    trace_row(
+        prof, pose, f, on_line, mx, s.dx_mm, s.ix0, s.origin_x_mm,
+        [&](int i, Vec3, double t_rail, double t_wheel) {
+          const double v = t_rail - t_wheel;
+          const std::size_t e = static_cast<std::size_t>(j) * static_cast<std::size_t>(mx) +
+                                static_cast<std::size_t>(i);
+          h[e] = v;
+          rail_n[e] = t_rail;
+          h_min = std::min(h_min, v);
+        },
+        &carry);
   }
   pen = -h_min;
   for (double& v : h)

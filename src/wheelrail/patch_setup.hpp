@@ -102,13 +102,28 @@ inline constexpr double kFarAway = 1e3;
 /// t_wheel) for each element where both are found; nothing when the rail is not below the row.
 /// The wheel's profile segment and distance carry from element to element (a prismatic rail's
 /// distance is the row's; a roller's or sliced rail's is found per element).
+/// Where the previous row's rail and first wheel point were found: the next row, DS away,
+/// starts its Newton iterations there (trace_row's `carry`).
+struct RowStart {
+  bool valid = false;
+  double t_rail = 0.0, t_wheel = 0.0;
+  CurveHint hint;
+};
+
 template <class Visit>
 void trace_row(const PlacedProfiles& prof, const WheelsetPose& pose, const ContactFrame& f,
-               Vec3 on_line, int mx, double dx_mm, int ix0, double origin_x_mm, Visit&& visit) {
+               Vec3 on_line, int mx, double dx_mm, int ix0, double origin_x_mm, Visit&& visit,
+               RowStart* carry = nullptr) {
   double t_rail = 0.0;
-  if (!rail_surface_along(prof, on_line, f.en, 0.0, t_rail)) return;
+  const bool from_last_row = carry != nullptr && carry->valid;
+  if (!rail_surface_along(prof, on_line, f.en, from_last_row ? carry->t_rail : 0.0, t_rail)) return;
   double t_wheel = t_rail;
   CurveHint hint;  // the wheel profile segment, carried along the row
+  if (from_last_row) {
+    t_wheel = carry->t_wheel;
+    hint = carry->hint;
+  }
+  bool first_found = false;
   // The last three elements' solutions on one profile segment: the next one starts from their
   // quadratic extrapolation. The wheel's distance varies like x²/2R along a row, so a linear
   // extrapolation from two is off by dx²/R (~5e-4 mm) and Newton needs a second evaluation to
@@ -138,6 +153,10 @@ void trace_row(const PlacedProfiles& prof, const WheelsetPose& pose, const Conta
       continue;
     }
     if (hint.segment != segment_before) known = 0;
+    if (carry != nullptr && !first_found) {
+      *carry = {true, t_rail, t_wheel, hint};
+      first_found = true;
+    }
     t_hist[2] = t_hist[1];
     t_hist[1] = t_hist[0];
     t_hist[0] = t_wheel;
