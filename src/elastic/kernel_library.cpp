@@ -70,8 +70,7 @@ const Kernel* KernelLibrary::find_covering(Component c, const Grid& grid,
 
 const Kernel& KernelLibrary::covering(Component c, const Grid& grid, const CombinedMaterial& m) {
   if (const Kernel* kept = find_covering(c, grid, m)) return *kept;
-  scratch_ = kernel(c, grid, m);  // tabulated, and kept unless too large
-  if (const Kernel* kept = find_covering(c, grid, m)) return *kept;
+  scratch_ = kernel(c, grid, m);  // the grid's own (tabulated, and kept for the next call)
   return scratch_;
 }
 

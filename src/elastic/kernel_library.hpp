@@ -63,7 +63,7 @@ class KernelLibrary {
   const Kernel* find_covering(Component c, const Grid& grid, const CombinedMaterial& m);
 
   std::size_t budget_bytes_, kept_bytes_ = 0;
-  Kernel scratch_;            ///< covering()'s answer where none is kept
+  Kernel scratch_;            ///< covering()'s answer where no kept kernel covers the grid
   std::list<Entry> entries_;  ///< most recently used first
   std::size_t computed_ = 0;
 };

@@ -96,12 +96,6 @@ bool on_super_grid(const model::WheelRailProblem& problem);
 /// The undeformed distance of an element whose line meets no wheel: never in contact [mm].
 inline constexpr double kFarAway = 1e3;
 
-/// One grid row of a patch: from the row's point `on_line` in the patch plane, the lines along
-/// the patch normal f.en through its mx elements (x = dx·(ix0 + i) − origin_x), where they meet
-/// the rail and the wheel (distances t_rail, t_wheel along f.en). Calls visit(i, point, t_rail,
-/// t_wheel) for each element where both are found; nothing when the rail is not below the row.
-/// The wheel's profile segment and distance carry from element to element (a prismatic rail's
-/// distance is the row's; a roller's or sliced rail's is found per element).
 /// Where the previous row's rail and first wheel point were found: the next row, DS away,
 /// starts its Newton iterations there (trace_row's `carry`).
 struct RowStart {
@@ -110,6 +104,13 @@ struct RowStart {
   CurveHint hint;
 };
 
+/// One grid row of a patch: from the row's point `on_line` in the patch plane, the lines along
+/// the patch normal f.en through its mx elements (x = dx·(ix0 + i) − origin_x), where they meet
+/// the rail and the wheel (distances t_rail, t_wheel along f.en). Calls visit(i, point, t_rail,
+/// t_wheel) for each element where both are found; nothing when the rail is not below the row.
+/// The wheel's profile segment and distance carry from element to element (a prismatic rail's
+/// distance is the row's; a roller's or sliced rail's is found per element), and with `carry`
+/// from row to row (read as this row's start, replaced by its first element's).
 template <class Visit>
 void trace_row(const PlacedProfiles& prof, const WheelsetPose& pose, const ContactFrame& f,
                Vec3 on_line, int mx, double dx_mm, int ix0, double origin_x_mm, Visit&& visit,

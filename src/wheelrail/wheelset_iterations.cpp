@@ -81,8 +81,8 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   // a sequence — a start, not the answer: where F_z(z) is continuous the answer is the same
   // within the tolerance. KPEC's and ANALYN's F_z jumps where their equivalent ellipse changes,
   // and where the answer is a bracket around such a jump the start decides its side: a KPEC
-  // state with a second lobe is therefore not remembered (solve_case), so that the cases
-  // after it start from Hertz as CONTACT does (docs/decisions.md).
+  // state with a second lobe is therefore not remembered (below), so that the case after it
+  // starts from Hertz as CONTACT's does (docs/decisions.md).
   if (const std::optional<double> a = approach_from_previous_cases(st.target_N);
       a && k <= 0.0 && (p.estimate_from_previous_case || !p.first_of_sequence))
     z1 = std::max(z0 + *a, z0 + 1e-3);
@@ -164,7 +164,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
           ? wheelrail::solve_vertical_force(settings, z0, z1, full_at)
           : wheelrail::solve_vertical_force_split(settings, z0, z1, full_at, normal_at, &rough_at);
   result.trace = vf.trace;
-  if (vf.converged && k <= 0.0)
+  if (vf.converged && k <= 0.0 && !kpec_second_lobe(p, result))
     remember_approach(vf.z_mm - z0, st.target_N);
   else
     previous_approaches.clear();

@@ -260,18 +260,19 @@ WheelRailSolution WheelsetSolver::Impl::solve_case(const model::WheelRailProblem
   complete_energies(result);
   // Judged on the state that stands: an iterate of the vertical-force iteration may pass through
   // such a state (mbench_a22_kpec c2 does where the deepest point changes lobes) and leave it.
-  if (p.patch.normal.pressure == model::PressureModel::Kpec)
-    for (const WheelRailPatch& w : result.patches)
-      if (w.solution.solver.kpec_rows_beyond_interpenetration > 0) {
-        // Not a start for the next case of a sweep: near KPEC's jumps the start decides the
-        // state, and the next case must not inherit this one (solve_for_height).
-        previous_approaches.clear();
-        unvalidated(p,
-                    "KPEC (B=5) where the gap interpenetrates beyond the equivalent ellipse (a "
-                    "second lobe; mbench_a22_kpec case 1 differs)",
-                    result.warnings);
-      }
+  if (kpec_second_lobe(p, result))
+    unvalidated(p,
+                "KPEC (B=5) where the gap interpenetrates beyond the equivalent ellipse (a "
+                "second lobe; mbench_a22_kpec case 1 differs)",
+                result.warnings);
   return result;
+}
+
+bool kpec_second_lobe(const model::WheelRailProblem& p, const WheelRailSolution& s) {
+  return p.patch.normal.pressure == model::PressureModel::Kpec &&
+         std::any_of(s.patches.begin(), s.patches.end(), [](const WheelRailPatch& w) {
+           return w.solution.solver.kpec_rows_beyond_interpenetration > 0;
+         });
 }
 
 namespace {

@@ -34,6 +34,10 @@ using wheelrail::to_public;
 using wheelrail::Vec3;
 using wheelrail::WheelsetPose;
 
+/// A KPEC state whose gap interpenetrates beyond the equivalent ellipse (a second lobe): refused
+/// unless unvalidated results are asked for, and never the start of the next case of a sweep.
+bool kpec_second_lobe(const model::WheelRailProblem& p, const WheelRailSolution& s);
+
 /// How the vertical equation of one solve is posed (the massless rail changes it).
 struct VerticalOptions {
   double tolerance = -1.0;  ///< of the vertical iteration; <= 0: EPS of the case
