@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "heap_setup.hpp"
 #include "process_distribution.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/fft_plan_cache.hpp"
@@ -29,6 +30,7 @@ bool fft_measure_requested(const CLI::App& app) {
 
 int main(int argc, char** argv) {
   using namespace rollcontact::cli;
+  prepare_heap();
   // First: under mpirun this is MPI_Init (which may edit argc, argv); destroyed last.
   const auto distribution = make_process_distribution(argc, argv);
   const bool root = distribution->is_root();
