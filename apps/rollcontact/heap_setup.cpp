@@ -20,10 +20,10 @@ namespace {
 constexpr std::size_t kMiB = std::size_t{1} << 20;
 /// Heap the first growth reserves and advises for transparent huge pages [bytes]; virtual
 /// until touched.
-constexpr std::size_t kHeapReserve = 64 * kMiB;
-/// Blocks from this size on keep glibc's own mmap/munmap [bytes]: their first touch is small
-/// next to the work done on them.
-constexpr std::size_t kMmapThreshold = 4 * kMiB;
+constexpr std::size_t kHeapReserve = 256 * kMiB;
+/// Blocks from this size on keep glibc's own mmap/munmap [bytes]: glibc's largest threshold,
+/// so that the FFT buffers of large grids (12 MB at 575×647) come from the huge-page heap too.
+constexpr std::size_t kMmapThreshold = 32 * kMiB;
 constexpr std::size_t kHugePage = 2 * kMiB;
 
 std::uintptr_t align_up(std::uintptr_t v, std::size_t a) {
@@ -35,7 +35,7 @@ std::uintptr_t align_up(std::uintptr_t v, std::size_t a) {
 void prepare_heap() noexcept {
   // glibc's dynamic thresholds map blocks from 128 kB on afresh and give the heap's top back as
   // soon as 256 kB are free; a sweep meets a new grid every few cases, and its operators (spectra,
-  // FFT buffers of 0.1–1 MB) then came from fresh pages, one fault per 4 kB: 11 % of a 0.5 mm
+  // FFT buffers of 0.1–12 MB) then came from fresh pages, one fault per 4 kB: 11 % of a 0.5 mm
   // wheel/rail sweep's time (perf). Fixed thresholds keep such blocks in the heap, ...
   mallopt(M_MMAP_THRESHOLD, static_cast<int>(kMmapThreshold));
   mallopt(M_TRIM_THRESHOLD, static_cast<int>(2 * kHeapReserve));
