@@ -93,6 +93,8 @@ batch::RunOptions solver_run_options(const RunSettings& settings) {
   options.solve.fft = parse_backend(settings.backend);
   options.solve.fft_planning = settings.measure ? FftPlanning::Measure : FftPlanning::Estimate;
   options.solve_unvalidated = settings.unvalidated;
+  // The report and JSON hold the fields; the program needs only each case's status after that.
+  options.keep_fields = false;
   return options;
 }
 

@@ -244,6 +244,28 @@ CaseOutput render_case(const format::InputCase& input, const CaseOutcome& outcom
   return out;
 }
 
+/// Frees a vector's memory (clear() keeps the capacity).
+template <class T>
+void release(std::vector<T>& v) {
+  std::vector<T>().swap(v);
+}
+
+/// The per-element fields of a solution, released; totals, statistics and reports stay.
+void release_fields(Solution& s) {
+  for (std::vector<double>* v :
+       {&s.h, &s.pn, &s.px, &s.py, &s.un, &s.ux, &s.uy, &s.sx, &s.sy, &s.wx, &s.wy, &s.mu,
+        &s.yield_limit, &s.plastic_x, &s.plastic_y, &s.plastic_accumulated, &s.temp1, &s.temp2})
+    release(*v);
+  release(s.state);
+  release(s.subsurface);
+}
+
+/// RunOptions::keep_fields = false: what a case's outcome keeps once its outputs are made.
+void release_fields(CaseOutcome& outcome) {
+  release_fields(outcome.solution);
+  for (WheelRailPatch& patch : outcome.wheelrail.patches) release_fields(patch.solution);
+}
+
 /// Writes the report and JSON of all cases, in case order.
 void write_run_files(std::vector<CaseOutput>& outputs, const std::string& input_name,
                      const std::filesystem::path& output_stem, RunResult& result) {
@@ -345,6 +367,7 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
     outputs.push_back(render_case(problems[k], outcome, output_stem));
     result.timing.output += seconds_since(start);
     if (options.on_case) options.on_case(outcome, k, problems.size());
+    if (!options.keep_fields) release_fields(outcome);
     result.cases.push_back(std::move(outcome));
   }
   start = std::chrono::steady_clock::now();

@@ -55,6 +55,12 @@ struct RunOptions {
   /// slices, KPEC beyond its ellipse, ...) with a warning each instead of refusing them
   /// (model::WheelRailProblem::validated_only).
   bool solve_unvalidated = false;
+  /// Keep each case's per-element fields (pressures, tractions, displacements, slips, …) in
+  /// RunResult::cases. False (the command-line program, which has written them to the report
+  /// and JSON): each outcome keeps its flags, totals, statistics and solver report, but its
+  /// fields are released once its outputs are made, so that a run's memory does not grow with
+  /// its number of cases.
+  bool keep_fields = true;
 };
 
 /// Where the wall time of a run went [s] (one thread: with threads > 1 set-up and solve are

@@ -1,0 +1,125 @@
+// RunOptions::keep_fields: the command-line program releases each case's per-element fields once
+// its report and JSON are made, so that a run's memory does not grow with its number of cases;
+// the outputs and each case's totals, statistics and status stay exactly those of a run that
+// keeps everything.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "batch/run_input.hpp"
+#include "support/examples.hpp"
+
+namespace rollcontact::batch {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Two runs of `input`, keeping and releasing the fields, into folders below `dir`.
+std::pair<RunResult, RunResult> run_both(const fs::path& input, const fs::path& dir) {
+  RunOptions keep;
+  keep.output_dir = dir / "keep";
+  RunOptions release = keep;
+  release.output_dir = dir / "release";
+  release.keep_fields = false;
+  return {run_input_file(input, keep), run_input_file(input, release)};
+}
+
+void expect_same_totals(const Solution& kept, const Solution& released) {
+  EXPECT_EQ(kept.totals.fn, released.totals.fn);
+  EXPECT_EQ(kept.totals.fx, released.totals.fx);
+  EXPECT_EQ(kept.totals.fy, released.totals.fy);
+  EXPECT_EQ(kept.totals.pen, released.totals.pen);
+  EXPECT_EQ(kept.statistics.ncon, released.statistics.ncon);
+  EXPECT_EQ(kept.solver.converged, released.solver.converged);
+}
+
+TEST(RunFields, ReleasedFieldsLeaveOutputsTotalsAndStatusAlone) {
+  const fs::path dir = fs::temp_directory_path() / "rollcontact_run_fields";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // A shift sequence: each case continues from the previous one's tractions, which the solver
+  // keeps itself; the released outcomes must not be what it continues from.
+  std::ofstream(dir / "seq.toml") << R"(version = 1
+[[case]]
+[case.normal]
+force_N = 10000.0
+[case.tangential]
+problem = "shift"
+shift_x_mm = 2e-4
+shift_y_mm = 0.0
+[case.material]
+body1 = { poisson = 0.28, shear_modulus_MPa = 82000.0 }
+body2 = { poisson = 0.28, shear_modulus_MPa = 82000.0 }
+[case.grid]
+hertz = { elements = [24, 24], semi_axes_mm = [3.0, 2.0], scale = 1.2 }
+
+[[case]]
+previous_state = "continue"
+[case.normal]
+force_N = 10000.0
+[case.tangential]
+problem = "shift"
+shift_x_mm = -3e-4
+shift_y_mm = 1e-4
+[case.material]
+body1 = { poisson = 0.28, shear_modulus_MPa = 82000.0 }
+body2 = { poisson = 0.28, shear_modulus_MPa = 82000.0 }
+[case.grid]
+hertz = { elements = [24, 24], semi_axes_mm = [3.0, 2.0], scale = 1.2 }
+)";
+  const auto [kept, released] = run_both(dir / "seq.toml", dir);
+  ASSERT_EQ(kept.cases.size(), 2U);
+  ASSERT_EQ(released.cases.size(), 2U);
+  EXPECT_EQ(read(kept.report_path), read(released.report_path));
+  EXPECT_EQ(read(kept.json_path), read(released.json_path));
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Solution& a = kept.cases[k].solution;
+    const Solution& b = released.cases[k].solution;
+    EXPECT_EQ(a.pn.size(), 24U * 24U);
+    EXPECT_TRUE(b.pn.empty() && b.px.empty() && b.ux.empty() && b.h.empty() && b.state.empty());
+    EXPECT_EQ(b.pn.capacity(), 0U) << "released, not only cleared";
+    expect_same_totals(a, b);
+    EXPECT_EQ(kept.cases[k].solved, released.cases[k].solved);
+  }
+  EXPECT_NE(released.cases[1].solution.totals.fx, 0.0);
+  fs::remove_all(dir);
+}
+
+TEST(RunFields, WheelRailPatchesReleaseTheirFields) {
+  REQUIRE_EXAMPLES();
+  const fs::path dir = fs::temp_directory_path() / "rollcontact_run_fields_wheelrail";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto [kept, released] = run_both(test_support::kExamples / "mbench_a22_right.inp", dir);
+  ASSERT_EQ(kept.cases.size(), released.cases.size());
+  EXPECT_EQ(read(kept.json_path), read(released.json_path));
+  std::size_t patches = 0;
+  for (std::size_t k = 0; k < kept.cases.size(); ++k) {
+    const WheelRailSolution& a = kept.cases[k].wheelrail;
+    const WheelRailSolution& b = released.cases[k].wheelrail;
+    ASSERT_EQ(a.patches.size(), b.patches.size());
+    EXPECT_EQ(a.converged, b.converged);
+    EXPECT_EQ(a.force_tr.z, b.force_tr.z);
+    for (std::size_t i = 0; i < a.patches.size(); ++i, ++patches) {
+      EXPECT_FALSE(a.patches[i].solution.pn.empty());
+      EXPECT_TRUE(b.patches[i].solution.pn.empty());
+      expect_same_totals(a.patches[i].solution, b.patches[i].solution);
+    }
+  }
+  EXPECT_GT(patches, 20U);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rollcontact::batch
