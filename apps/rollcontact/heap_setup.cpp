@@ -41,7 +41,7 @@ void prepare_heap() noexcept {
   mallopt(M_TRIM_THRESHOLD, static_cast<int>(2 * kHeapReserve));
   mallopt(M_TOP_PAD, static_cast<int>(kHeapReserve));
   // ... and the heap, grown once by the reserve, asks for huge pages: one fault per 2 MB. The
-  // fixed thresholds alone changed nothing measurable; with the pages, sweeps ran 6–12 % faster
+  // fixed thresholds alone changed nothing measurable; with the pages, sweeps ran 3–16 % faster
   // (docs/benchmarks.md). volatile: the compiler would drop a block freed unused.
   const auto before = reinterpret_cast<std::uintptr_t>(sbrk(0));
   void* volatile probe = std::malloc(kHugePage);
