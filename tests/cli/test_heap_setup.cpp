@@ -1,17 +1,17 @@
 // The command-line program's allocator set-up (apps/rollcontact/heap_setup.cpp): medium blocks
 // stay in the heap, and the heap is eligible for transparent huge pages. A set-up compiled out
-// by mistake (a missing glibc macro) left every sweep 6–12 % slower without a visible sign.
+// by mistake (a missing glibc macro) left every sweep 3–16 % slower without a visible sign.
 
 #include <gtest/gtest.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <string>
 
 #include "heap_setup.hpp"
+#include "support/files.hpp"
 
 #if defined(__GLIBC__) && defined(__linux__)
 #include <unistd.h>
@@ -36,13 +36,6 @@ constexpr bool kSanitizerAllocator = false;
 
 #if defined(__GLIBC__) && defined(__linux__)
 
-std::string read_file(const char* path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 /// What /proc/self/smaps says of the mapping that holds `address`.
 struct Mapping {
   bool found = false;
@@ -51,7 +44,7 @@ struct Mapping {
 };
 
 Mapping mapping_at(std::uintptr_t address) {
-  std::istringstream smaps(read_file("/proc/self/smaps"));
+  std::istringstream smaps(rollcontact::test_support::file_text("/proc/self/smaps"));
   std::string line;
   Mapping m;
   bool inside = false;
@@ -90,7 +83,8 @@ TEST(HeapSetup, MediumBlocksComeFromTheHeapAndTheHeapMayUseHugePages) {
 
   // The reserve's middle (2 MiB pages are whole there) may use huge pages where the system
   // allows them at all.
-  const std::string thp = read_file("/sys/kernel/mm/transparent_hugepage/enabled");
+  const std::string thp =
+      rollcontact::test_support::file_text("/sys/kernel/mm/transparent_hugepage/enabled");
   const Mapping reserve = mapping_at(heap_start + (heap_end - heap_start) / 2);
   ASSERT_TRUE(reserve.found);
   if (!thp.empty() && thp.find("[never]") == std::string::npos && reserve.thp_eligible >= 0) {

@@ -6,23 +6,17 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "batch/run_input.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::file_text;
 
 /// Three transient sequences (result elements 1-3) of four shifts each, interleaved.
 std::string interleaved_sequences() {
@@ -64,8 +58,8 @@ TEST(ParallelRun, ThreadsGiveTheOneThreadOutputsByteForByte) {
   ASSERT_EQ(b.cases.size(), 12U);
   EXPECT_EQ(a.failed, 0);
   EXPECT_EQ(b.failed, 0);
-  EXPECT_EQ(read(a.report_path), read(b.report_path));
-  EXPECT_EQ(read(a.json_path), read(b.json_path));
+  EXPECT_EQ(file_text(a.report_path), file_text(b.report_path));
+  EXPECT_EQ(file_text(a.json_path), file_text(b.json_path));
   EXPECT_GE(progress_calls, 1U);  // at least the final call
   // The sequences matter: case 4 continues from case 1's tractions (same element).
   EXPECT_NE(a.cases[3].solution.totals.fx, 0.0);
@@ -85,8 +79,8 @@ TEST(ParallelRun, WheelRailElementsInParallel) {
   two.threads = 2;
   const RunResult a = run_input_file(examples / "mbench_a22_left.inp", one);
   const RunResult b = run_input_file(examples / "mbench_a22_left.inp", two);
-  EXPECT_EQ(read(a.report_path), read(b.report_path));
-  EXPECT_EQ(read(a.json_path), read(b.json_path));
+  EXPECT_EQ(file_text(a.report_path), file_text(b.report_path));
+  EXPECT_EQ(file_text(a.json_path), file_text(b.json_path));
   fs::remove_all(dir);
 }
 

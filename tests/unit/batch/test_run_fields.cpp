@@ -7,23 +7,17 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "batch/run_input.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test_support::file_text;
 
 /// Two runs of `input`, keeping and releasing the fields, into folders below `dir`.
 std::pair<RunResult, RunResult> run_both(const fs::path& input, const fs::path& dir) {
@@ -81,8 +75,8 @@ hertz = { elements = [24, 24], semi_axes_mm = [3.0, 2.0], scale = 1.2 }
   const auto [kept, released] = run_both(dir / "seq.toml", dir);
   ASSERT_EQ(kept.cases.size(), 2U);
   ASSERT_EQ(released.cases.size(), 2U);
-  EXPECT_EQ(read(kept.report_path), read(released.report_path));
-  EXPECT_EQ(read(kept.json_path), read(released.json_path));
+  EXPECT_EQ(file_text(kept.report_path), file_text(released.report_path));
+  EXPECT_EQ(file_text(kept.json_path), file_text(released.json_path));
   for (std::size_t k = 0; k < 2; ++k) {
     const Solution& a = kept.cases[k].solution;
     const Solution& b = released.cases[k].solution;
@@ -103,7 +97,7 @@ TEST(RunFields, WheelRailPatchesReleaseTheirFields) {
   fs::create_directories(dir);
   const auto [kept, released] = run_both(test_support::kExamples / "mbench_a22_right.inp", dir);
   ASSERT_EQ(kept.cases.size(), released.cases.size());
-  EXPECT_EQ(read(kept.json_path), read(released.json_path));
+  EXPECT_EQ(file_text(kept.json_path), file_text(released.json_path));
   std::size_t patches = 0;
   for (std::size_t k = 0; k < kept.cases.size(); ++k) {
     const WheelRailSolution& a = kept.cases[k].wheelrail;
