@@ -476,9 +476,13 @@ SearchResult search_contact(const model::WheelRailProblem& p, const PlacedProfil
     }
   }
   res.delta_at_min_rad = g.rail_angle[j_min];
-  if (j_min > 0 && j_min + 1 < n && g.gap[j_min - 1] < kNoWheel && g.gap[j_min + 1] < kNoWheel)
-    res.curvature_at_min =
-        0.5 * (g.gap[j_min - 1] - 2.0 * g.gap[j_min] + g.gap[j_min + 1]) / (g.dy_mm * g.dy_mm);
+  res.min_gap_between_samples_mm = res.min_gap_mm;
+  if (j_min > 0 && j_min + 1 < n && g.gap[j_min - 1] < kNoWheel && g.gap[j_min + 1] < kNoWheel) {
+    const double second = g.gap[j_min - 1] - 2.0 * g.gap[j_min] + g.gap[j_min + 1];
+    const double slope = g.gap[j_min + 1] - g.gap[j_min - 1];
+    res.curvature_at_min = 0.5 * second / (g.dy_mm * g.dy_mm);
+    if (second > 0.0) res.min_gap_between_samples_mm -= slope * slope / (8.0 * second);
+  }
   res.minimum_at_profile_end = res.min_gap_mm < kNoWheel && (j_min == 0 || j_min + 1 == n);
 
   // Regions: maximal runs of negative gap, one guard sample on each side.

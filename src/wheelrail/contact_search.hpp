@@ -53,8 +53,13 @@ struct ContactRegion {
 
 struct SearchResult {
   GapFunction gap;
-  std::vector<ContactRegion> patches;   ///< by decreasing lateral position, at most 10
-  double min_gap_mm = 0.0;              ///< smallest gap anywhere (the start of contact)
+  std::vector<ContactRegion> patches;  ///< by decreasing lateral position, at most 10
+  double min_gap_mm = 0.0;             ///< smallest gap anywhere (the start of contact)
+  /// The smallest gap between the samples: the vertex of the parabola through the smallest
+  /// sample and its neighbours (min_gap_mm where that is not a minimum) [mm]. The smallest
+  /// sample overestimates it by up to the gap's curvature times (dy/2)², depending on where the
+  /// samples fall; the vertex does not.
+  double min_gap_between_samples_mm = 0.0;
   double delta_at_min_rad = 0.0;        ///< rail inclination where the gap is smallest
   double curvature_at_min = 0.0;        ///< d²g/dy² / 2 there [1/mm] (lateral Hertz curvature)
   bool minimum_at_profile_end = false;  ///< the deepest local minimum is at a rail profile end

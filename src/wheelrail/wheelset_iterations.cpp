@@ -53,6 +53,10 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
     return result;
   }
   const double z0 = s0.min_gap_mm;
+  // The approach of the previous cases counts from the first contact between the gap's samples:
+  // from the smallest sample it jumps with where the samples fall (±1.5 µm on the benchmark's
+  // flange contacts, F_z ±800 N at the first guess).
+  const double contact_start = s0.min_gap_between_samples_mm;
   const double k = st.spring_N_per_mm;
   if (k > 0.0 && k * z0 - st.target_N >= 0.0) {
     // The rail's spring and load lift it clear of the wheel: no contact, F_z = 0.
@@ -85,7 +89,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   // starts from Hertz as CONTACT's does (docs/decisions.md).
   if (const std::optional<double> a = approach_from_previous_cases(st.target_N);
       a && k <= 0.0 && (p.estimate_from_previous_case || !p.first_of_sequence))
-    z1 = std::max(z0 + *a, z0 + 1e-3);
+    z1 = std::max(contact_start + *a, z0 + 1e-3);
   if (k > 0.0) {
     // The massless rail with z_ws prescribed: the Hertz force C·pen^1.5 (C from 10 kN) against
     // the spring, C·((z − z0)·cos)^1.5 + k·z = target, by bisection between the start of
@@ -165,7 +169,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
           : wheelrail::solve_vertical_force_split(settings, z0, z1, full_at, normal_at, &rough_at);
   result.trace = vf.trace;
   if (vf.converged && k <= 0.0 && !kpec_second_lobe(p, result))
-    remember_approach(vf.z_mm - z0, st.target_N);
+    remember_approach(vf.z_mm - contact_start, st.target_N);
   else
     previous_approaches.clear();
   if (!vf.converged) {
