@@ -44,6 +44,23 @@ std::optional<ContactBox> contact_box(const Grid& grid, const std::vector<char>&
   return box;
 }
 
+std::optional<ContactBox> interpenetration_box(const Grid& grid, const std::vector<double>& h,
+                                               double pen, double max_fraction) {
+  std::vector<char> inside(h.size());
+  for (std::size_t i = 0; i < h.size(); ++i) inside[i] = h[i] < pen;
+  return contact_box(grid, inside, max_fraction);
+}
+
+bool zero_outside(const std::vector<double>& full, const Grid& grid, const ContactBox& box) {
+  for (int iy = 0; iy < grid.my; ++iy)
+    for (int ix = 0; ix < grid.mx; ++ix) {
+      const bool inside = ix >= box.ix0 && ix < box.ix0 + box.grid.mx && iy >= box.iy0 &&
+                          iy < box.iy0 + box.grid.my;
+      if (!inside && full[grid.index(ix, iy)] != 0.0) return false;
+    }
+  return true;
+}
+
 tangential::TangentialSystem restrict_to_box(const tangential::TangentialSystem& sys,
                                              const ContactBox& box,
                                              const tangential::TangentialOperator& a) {

@@ -30,6 +30,13 @@ struct ContactBox {
 std::optional<ContactBox> contact_box(const Grid& grid, const std::vector<char>& contact,
                                       double max_fraction);
 
+/// The box around the elements where the bodies interpenetrate, h < pen [mm] (h ≥ pen and
+/// excluded elements outside), as contact_box. For a prescribed approach on a half-space whose
+/// influence coefficients are positive (Johnson's process, A·p ≥ 0 for p ≥ 0) the contact lies
+/// inside: an element with h ≥ pen keeps a gap h − pen + A·p ≥ 0 whatever the pressure.
+std::optional<ContactBox> interpenetration_box(const Grid& grid, const std::vector<double>& h,
+                                               double pen, double max_fraction);
+
 /// The entries of a full-grid field inside the box, in the box's element order.
 template <class T>
 std::vector<T> restrict_to_box(const std::vector<T>& full, const Grid& grid,
@@ -40,6 +47,20 @@ std::vector<T> restrict_to_box(const std::vector<T>& full, const Grid& grid,
       out[box.grid.index(ix, iy)] = full[grid.index(box.ix0 + ix, box.iy0 + iy)];
   return out;
 }
+
+/// A field of the box on the full grid, `outside` elsewhere.
+template <class T>
+std::vector<T> expand_from_box(const std::vector<T>& in_box, const Grid& grid,
+                               const ContactBox& box, T outside) {
+  std::vector<T> out(grid.size(), outside);
+  for (int iy = 0; iy < box.grid.my; ++iy)
+    for (int ix = 0; ix < box.grid.mx; ++ix)
+      out[grid.index(box.ix0 + ix, box.iy0 + iy)] = in_box[box.grid.index(ix, iy)];
+  return out;
+}
+
+/// True when `full` vanishes outside the box (a field the box holds entirely).
+bool zero_outside(const std::vector<double>& full, const Grid& grid, const ContactBox& box);
 
 /// The system on the box with the box's operator `a` (same material, loading and step).
 tangential::TangentialSystem restrict_to_box(const tangential::TangentialSystem& sys,

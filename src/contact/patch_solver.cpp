@@ -47,6 +47,9 @@ using Field = std::vector<double>;
 /// position 9 %, force 3 %, 50 kN force 6 %: wheel/rail grids hold the contact with a margin
 /// that leaves boxes of 0.55–0.7 of the grid); 0.99 measured the same as 0.75.
 constexpr double max_contact_box_fraction = 0.75;
+/// The normal solve's box (CaseSolver::normal_box). Measured (instructions, right 10 kN 0.5 mm
+/// force sweep): 0.9 and 0.97 equal, 0.75 +1 %.
+constexpr double max_normal_box_fraction = 0.9;
 
 /// The elastic energy ½Σ(p·u)·δxδy [J] from the sum Σ(p_n u_n + p_x u_x + p_y u_y) [N/mm] over
 /// the elements and their area [mm²] (CONTACT's ELAST.EN; N·mm → J).
@@ -351,6 +354,16 @@ class CaseSolver {
   /// at a new step of steady rolling) and latest_pn_; returns the previous solution or nullptr.
   const Solution* map_sequence(model::TangentialKind kind);
   void solve_normal(const Field& px, const Field& py);
+  normal::NormalSettings normal_settings() const;
+  /// NormCG for h (the whole grid) from `initial` (or the Hertz, coarse-grid or geometric
+  /// start), on a box of the grid where the contact is known to lie inside it.
+  normal::NormalResult solve_normal_cg(const Field& h, normal::NormalLoad load, double value,
+                                       const Field* initial, const Field* initial_un,
+                                       NormalOperators& ops);
+  /// The box for the normal solve with the approach given: around the interpenetration, and
+  /// within that around the starting pressure when there is one (to be checked afterwards).
+  std::optional<contact::ContactBox> normal_box(const Field& h, double pen,
+                                                const Field* initial) const;
   void set_prescribed_pressure();
   /// KPEC (kpec) or ANALYN for the prescribed approach on the case's grid.
   void set_approximate_pressure(bool kpec);
@@ -478,7 +491,6 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   // Starting pressure: the current one in an outer loop, else the previous case's when asked
   // for, else the Hertz solution for Hertzian geometries (physics.md §7.1), else the coarse-grid
   // or geometric estimate.
-  Field start;
   const Field* initial = nullptr;
   const Field* initial_un = nullptr;  // A·initial when known (no starting product)
   if (!sol_.pn.empty()) {
@@ -492,45 +504,21 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   } else if (problem_.sequence.normal_from_previous && prev_.present &&
              std::any_of(prev_.pn.begin(), prev_.pn.end(), [](double v) { return v > 0.0; })) {
     initial = &prev_.pn;
-  } else if (sol_.hertz.present) {
-    start.assign(n, 0.0);
-    for (int iy = 0; iy < grid_.my; ++iy)
-      for (int ix = 0; ix < grid_.mx; ++ix)
-        start[grid_.index(ix, iy)] =
-            geometry::hertz_pressure(sol_.hertz, grid_.x_centre(ix), grid_.y_centre(iy));
-    if (std::any_of(start.begin(), start.end(), [](double v) { return v > 0.0; })) initial = &start;
   }
 
-  normal::NormalSettings settings;
-  // At the case's tolerance also in a rough solve: its pressure is a sample of the
-  // vertical-force iteration's normal estimates (wheelrail/vertical_force.hpp).
-  settings.eps = problem_.solver.tolerance;
-  settings.max_iterations = problem_.solver.max_inner_iterations;
   const normal::NormalLoad load =
       force_given ? normal::NormalLoad::Force : normal::NormalLoad::Approach;
-  // Viscoelastic rolling (M=1): A is not symmetric, NormCG does not apply (active_set_solver.hpp).
-  const bool nonsymmetric = sol_.material.viscoelastic();
-  if (initial == nullptr && !nonsymmetric) {
-    int coarse_iterations = 0;
-    start = coarse_grid_start(st_, 1, grid_, h_star, load, load_value, sol_.material, settings,
-                              coarse_iterations);
-    sol_.solver.normal_coarse_iterations += coarse_iterations;
-    if (!start.empty()) initial = &start;
-  }
-
   normal::NormalResult r;
-  if (nonsymmetric) {
+  if (sol_.material.viscoelastic()) {
+    // Viscoelastic rolling (M=1): A is not symmetric, NormCG does not apply
+    // (active_set_solver.hpp).
     normal::ActiveSetNormalSolver solver(grid_, *ops.product);
-    r = solver.solve(h_star, load, load_value, settings, initial, sol_.material.nu,
-                     sol_.material.g);
+    r = solver.solve(h_star, load, load_value, normal_settings(), initial, mat.nu, mat.g);
   } else {
-    normal::NormalSolver solver(grid_, *ops.product, ops.kernel, *ops.preconditioner,
-                                ops.interaction.get());
-    r = solver.solve(h_star, load, load_value, settings, initial, sol_.material.nu, sol_.material.g,
-                     initial_un);
+    r = solve_normal_cg(h_star, load, load_value, initial, initial_un, ops);
   }
   st_.last_normal.reset();
-  if (r.converged && !nonsymmetric && !interaction_ && !sol_.material.table) {
+  if (r.converged && !sol_.material.viscoelastic() && !interaction_ && !sol_.material.table) {
     PatchSolver::Impl::NormalAnswer& a = st_.last_normal.emplace();
     a.grid = grid_;
     a.h = h_star;
@@ -542,9 +530,9 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     a.nu = sol_.material.nu;
     a.k = sol_.material.k;
     a.pen = r.pen;
-    a.eps = settings.eps;
+    a.eps = normal_settings().eps;
   }
-  if (!nonsymmetric) normal_un_ = r.un;
+  if (!sol_.material.viscoelastic()) normal_un_ = r.un;
   sol_.pn = std::move(r.pn);
   sol_.totals.pen = r.pen;
   sol_.solver.normal_iterations += r.iterations;
@@ -556,6 +544,122 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     sol_.solver.converged = false;
     sol_.solver.message = r.message;
   }
+}
+
+normal::NormalSettings CaseSolver::normal_settings() const {
+  normal::NormalSettings settings;
+  // At the case's tolerance also in a rough solve: its pressure is a sample of the
+  // vertical-force iteration's normal estimates (wheelrail/vertical_force.hpp).
+  settings.eps = problem_.solver.tolerance;
+  settings.max_iterations = problem_.solver.max_inner_iterations;
+  return settings;
+}
+
+std::optional<contact::ContactBox> CaseSolver::normal_box(const Field& h, double pen,
+                                                          const Field* initial) const {
+  const Grid& g = grid_;
+  // Where h ≥ PEN the gap h − PEN + A·p stays open whatever p ≥ 0: the contact lies in the
+  // interpenetration. Wheel/rail grids hug that, but the contact covers a third to a half of
+  // it (a flat lateral gap), and a starting pressure (an iterate's, the previous case's) tells
+  // where: the box around its support (contact_box adds a free element each side and rounds
+  // up), to be checked afterwards. Wider margins measured: more products, as few restarts.
+  int ix_lo = g.mx, ix_hi = -1, iy_lo = g.my, iy_hi = -1;
+  if (initial != nullptr)
+    for (int iy = 0; iy < g.my; ++iy)
+      for (int ix = 0; ix < g.mx; ++ix)
+        if ((*initial)[g.index(ix, iy)] > 0.0) {
+          ix_lo = std::min(ix_lo, ix);
+          ix_hi = std::max(ix_hi, ix);
+          iy_lo = std::min(iy_lo, iy);
+          iy_hi = std::max(iy_hi, iy);
+        }
+  const bool speculative = ix_hi >= 0;
+  std::vector<char> inside(h.size(), 0);
+  for (int iy = 0; iy < g.my; ++iy)
+    for (int ix = 0; ix < g.mx; ++ix) {
+      const bool near_start =
+          !speculative || (ix >= ix_lo && ix <= ix_hi && iy >= iy_lo && iy <= iy_hi);
+      inside[g.index(ix, iy)] = near_start && h[g.index(ix, iy)] < pen;
+    }
+  return contact::contact_box(g, inside, max_normal_box_fraction);
+}
+
+normal::NormalResult CaseSolver::solve_normal_cg(const Field& h, normal::NormalLoad load,
+                                                 double value, const Field* initial,
+                                                 const Field* initial_un, NormalOperators& ops) {
+  const CombinedMaterial& mat = sol_.material;
+  const normal::NormalSettings settings = normal_settings();
+  // With the approach given on a half-space whose influence coefficients are positive the
+  // problem on a box that holds the contact is the same problem, with FFT products on the box
+  // only (contact/contact_box.hpp). Not for a file's coefficients (no sign known) or attenuated
+  // parts (IPLAN=4, not translation invariant).
+  std::optional<contact::ContactBox> box;
+  if (load == normal::NormalLoad::Approach && !interaction_ && !mat.table)
+    box = normal_box(h, value, initial);
+  const Grid& grid = box ? box->grid : grid_;
+  const Field h_box = box ? contact::restrict_to_box(h, grid_, *box) : Field{};
+  const Field& hb = box ? h_box : h;
+
+  Field initial_box, initial_un_box, start;
+  if (box && initial != nullptr) {
+    // A displacement on the box is the whole pressure's only when the box holds all of it.
+    const bool whole = initial_un != nullptr && contact::zero_outside(*initial, grid_, *box);
+    if (whole) initial_un_box = contact::restrict_to_box(*initial_un, grid_, *box);
+    initial_un = whole ? &initial_un_box : nullptr;
+    initial_box = contact::restrict_to_box(*initial, grid_, *box);
+    initial = &initial_box;
+  }
+  if (initial == nullptr && sol_.hertz.present) {
+    start.assign(grid.size(), 0.0);
+    for (int iy = 0; iy < grid.my; ++iy)
+      for (int ix = 0; ix < grid.mx; ++ix)
+        start[grid.index(ix, iy)] =
+            geometry::hertz_pressure(sol_.hertz, grid.x_centre(ix), grid.y_centre(iy));
+    if (std::any_of(start.begin(), start.end(), [](double v) { return v > 0.0; })) initial = &start;
+  }
+  if (initial == nullptr) {
+    int coarse_iterations = 0;
+    start = coarse_grid_start(st_, 1, grid, hb, load, value, mat, settings, coarse_iterations);
+    sol_.solver.normal_coarse_iterations += coarse_iterations;
+    if (!start.empty()) initial = &start;
+  }
+
+  NormalOperators& bops = box ? st_.operators.normal(grid, mat) : ops;
+  normal::NormalSolver solver(grid, *bops.product, bops.kernel, *bops.preconditioner,
+                              bops.interaction.get());
+  normal::NormalResult r =
+      solver.solve(hb, load, value, settings, initial, mat.nu, mat.g, initial_un);
+  if (!box) return r;
+
+  // On the whole grid: the pressure, and its displacement (one product) for the outputs and
+  // for the check that the contact indeed lies in the box.
+  Field pn = contact::expand_from_box(r.pn, grid_, *box, 0.0);
+  Field un(grid_.size());
+  ops.product->apply(pn.data(), un.data());
+  ++r.products;
+  bool holds = true;
+  for (int iy = 0; iy < grid_.my && holds; ++iy)
+    for (int ix = 0; ix < grid_.mx && holds; ++ix) {
+      const bool in_box =
+          ix >= box->ix0 && ix < box->ix0 + grid.mx && iy >= box->iy0 && iy < box->iy0 + grid.my;
+      const std::size_t i = grid_.index(ix, iy);
+      holds = in_box || h[i] + un[i] >= value;
+    }
+  if (!holds) {
+    // The contact reaches beyond the starting pressure's box (around the interpenetration only
+    // by rounding): on the whole grid, from here.
+    normal::NormalSolver full(grid_, *ops.product, ops.kernel, *ops.preconditioner,
+                              ops.interaction.get());
+    normal::NormalResult again = full.solve(h, load, value, settings, &pn, mat.nu, mat.g, &un);
+    again.iterations += r.iterations;
+    again.set_changes += r.set_changes;
+    again.products += r.products;
+    again.iteration_seconds += r.iteration_seconds;
+    return again;
+  }
+  r.pn = std::move(pn);
+  r.un = std::move(un);
+  return r;
 }
 
 void CaseSolver::set_prescribed_pressure() {
