@@ -122,6 +122,40 @@ TEST_P(FftEngineTest, PrunedRowsBehaveAsZeroPadding) {
   }
 }
 
+// The convolution's forward transforms with fewer nonzero rows after more: the rows beyond
+// the declared ones must act as zeros, whatever an earlier transform left behind (FFTW keeps the
+// row transforms' buffer and clears only the rows written before and not now).
+TEST_P(FftEngineTest, ConvolutionWithFewerRowsAfterMoreSeesZeros) {
+  const int nf = 20, ns = 18;
+  auto engine = make_fft_engine(GetParam(), nf, ns);
+  const std::vector<Complex> identity(engine->spectrum_size(), Complex(1.0, 0.0));
+  engine->set_convolution_symbol(identity.data());
+  const std::vector<double> x = random_field(engine->real_size(), 5u);
+  for (int rows : {ns, 12, 5, 9, 1}) {
+    std::copy(x.begin(), x.end(), engine->real_data());  // garbage in the rows declared zero
+    engine->execute_convolution(rows, ns);
+    for (int j = 0; j < ns; ++j)
+      for (int i = 0; i < nf; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i + nf * j);
+        const double expected = j < rows ? x[k] : 0.0;
+        ASSERT_NEAR(engine->real_data()[k] / (nf * ns), expected, 1e-13)
+            << "rows " << rows << " at " << i << ", " << j;
+      }
+  }
+  engine->set_channel_count(1);
+  for (int rows : {ns, 4}) {
+    std::copy(x.begin(), x.end(), engine->real_data());
+    engine->forward_to_channel(rows, 0);
+    engine->inverse_from_channel(0, ns);
+    for (int j = 0; j < ns; ++j)
+      for (int i = 0; i < nf; ++i) {
+        const std::size_t k = static_cast<std::size_t>(i + nf * j);
+        ASSERT_NEAR(engine->real_data()[k] / (nf * ns), j < rows ? x[k] : 0.0, 1e-13)
+            << "channel, rows " << rows << " at " << i << ", " << j;
+      }
+  }
+}
+
 // Engines of one size share their plans (FFTW: a process-wide table, executed on each engine's
 // own arrays): interleaved transforms of two engines must not see each other's data, and an
 // engine must keep working after another of its size, which made the plans, is gone.
