@@ -11,6 +11,7 @@
 
 #include "rollcontact/creep_lookup.h"
 #include "rollcontact/creep_lookup.hpp"
+#include "support/files.hpp"
 
 namespace {
 
@@ -28,7 +29,8 @@ CreepLookupTable make_table() {
 }
 
 TEST(CreepLookupC, EvaluatesAsTheCppTable) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "rc_lookup_c.h5";
+  const test_support::ScratchDir scratch("rc_lookup_c");
+  const std::filesystem::path path = scratch / "rc_lookup_c.h5";
   const CreepLookupTable t = make_table();
   save_creep_lookup(t, path);
   char error[256] = "x";

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "rollcontact/contact_addon.h"
+#include "support/files.hpp"
 
 namespace {
 
@@ -232,8 +233,8 @@ int centred_wheel(int ire, int side, const std::filesystem::path& dir) {
     if (n == 13) line[1] = static_cast<char>('0' + side);  // the C digit of C-P-B-T-N-F-S
     text += line + "\n";
   }
-  const auto file = std::filesystem::temp_directory_path() / ("cntc_side" + std::to_string(side));
-  std::filesystem::create_directories(file);
+  const rollcontact::test_support::ScratchDir scratch("cntc_side" + std::to_string(side));
+  const std::filesystem::path& file = scratch.path();
   for (const char* name : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
     std::filesystem::copy_file(dir / name, file / name,
                                std::filesystem::copy_options::overwrite_existing);

@@ -7,9 +7,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "support/files.hpp"
 
 namespace {
 
@@ -24,11 +27,9 @@ int run_cli(const std::string& arguments) {
 class CliDynamic : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("rc_cli_dynamic_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    scratch_.emplace("rc_cli_dynamic_" +
+                     std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = scratch_->path();
     const fs::path profiles =
         fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples" / "profiles";
     std::ofstream(dir_ / "wheel.inp") << "  1 MODULE\n"
@@ -50,7 +51,7 @@ class CliDynamic : public ::testing::Test {
                                          " 38888.9 0.0    0.0   0.0   0.0  -84.5411\n"
                                          "  0 MODULE\n";
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  std::optional<rollcontact::test_support::ScratchDir> scratch_;
   fs::path dir_;
 };
 

@@ -7,8 +7,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <string>
+
+#include "support/files.hpp"
 
 namespace {
 
@@ -23,13 +26,11 @@ int exit_status(const std::string& arguments) {
 class CliExitStatus : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("rc_cli_exit_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    scratch_.emplace("rc_cli_exit_" +
+                     std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    dir_ = scratch_->path();
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  std::optional<rollcontact::test_support::ScratchDir> scratch_;
   fs::path dir_;
 };
 
@@ -129,12 +130,18 @@ TEST_F(CliExitStatus, ExampleLeavesNothingInTheWorkingDirectory) {
   EXPECT_EQ(exit_status("example -q --output-dir " + (dir_ / "named").string()), 0);
   EXPECT_TRUE(fs::exists(dir_ / "named" / "example.inp"));
   EXPECT_TRUE(fs::exists(dir_ / "named" / "example.out"));
-  const fs::path cwd = dir_ / "cwd";
+  const fs::path cwd = dir_ / "cwd", tmp = dir_ / "tmp";
   fs::create_directories(cwd);
-  const std::string command =
-      "cd " + cwd.string() + " && " + std::string(ROLLCONTACT_CLI) + " example -q >/dev/null 2>&1";
+  fs::create_directories(tmp);
+  // The example's own folder goes to the temporary folder (TMPDIR: here, so that it is removed).
+  const std::string command = "cd " + cwd.string() + " && TMPDIR=" + tmp.string() + " " +
+                              std::string(ROLLCONTACT_CLI) + " example -q >/dev/null 2>&1";
   EXPECT_EQ(std::system(command.c_str()), 0);
   EXPECT_TRUE(fs::is_empty(cwd)) << "example wrote into the working directory";
+  int folders = 0;
+  for (const auto& entry : fs::directory_iterator(tmp))
+    folders += fs::exists(entry.path() / "example.out");
+  EXPECT_EQ(folders, 1) << "the example's outputs belong in a new temporary folder";
 }
 
 }  // namespace

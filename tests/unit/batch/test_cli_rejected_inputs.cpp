@@ -43,8 +43,8 @@ using rollcontact::test_support::file_text;
 
 TEST(CliRejectedInputs, EveryFileIsExitTwoAtItsLineAndNothingIsWritten) {
   const fs::path corpus = fs::path(ROLLCONTACT_TEST_DATA_DIR) / "rejected";
-  const fs::path work = fs::temp_directory_path() / "rc_cli_rejected";
-  fs::remove_all(work);
+  const rollcontact::test_support::ScratchDir scratch("rc_cli_rejected");
+  const fs::path& work = scratch.path();
   int checked = 0;
   for (const auto& entry : fs::directory_iterator(corpus)) {
     const fs::path& source = entry.path();
@@ -72,7 +72,6 @@ TEST(CliRejectedInputs, EveryFileIsExitTwoAtItsLineAndNothingIsWritten) {
     EXPECT_EQ(file_text(input), file_text(source));
     ++checked;
   }
-  fs::remove_all(work);
   EXPECT_GE(checked, 100);
 }
 

@@ -14,6 +14,7 @@
 
 #include "batch/creep_table.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
@@ -179,9 +180,8 @@ TEST(CreepTable, SolvesWithTheExpectedSigns) {
 }
 
 TEST(CreepTable, CommandLineWritesTheCsv) {
-  const auto dir = std::filesystem::temp_directory_path() / "rc_creep_table";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const test_support::ScratchDir scratch("rc_creep_table");
+  const std::filesystem::path& dir = scratch.path();
   const std::string cli = ROLLCONTACT_CLI;
   const std::string ref = (dir / "ref.csv").string(), fs = (dir / "fs.csv").string();
   const std::string md = (dir / "stats.md").string();
@@ -206,7 +206,6 @@ TEST(CreepTable, CommandLineWritesTheCsv) {
   std::ifstream tin(target);
   std::getline(tin, header);
   EXPECT_EQ(header, table_csv_header());
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -38,9 +38,8 @@ std::string interleaved_sequences() {
 }
 
 TEST(ParallelRun, ThreadsGiveTheOneThreadOutputsByteForByte) {
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_parallel_run";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_parallel_run");
+  const fs::path& dir = scratch.path();
   std::ofstream(dir / "seq.toml") << interleaved_sequences();
   RunOptions one;
   one.output_dir = dir / "one";
@@ -63,15 +62,13 @@ TEST(ParallelRun, ThreadsGiveTheOneThreadOutputsByteForByte) {
   EXPECT_GE(progress_calls, 1U);  // at least the final call
   // The sequences matter: case 4 continues from case 1's tractions (same element).
   EXPECT_NE(a.cases[3].solution.totals.fx, 0.0);
-  fs::remove_all(dir);
 }
 
 TEST(ParallelRun, WheelRailElementsInParallel) {
   REQUIRE_EXAMPLES();
   const fs::path examples{ROLLCONTACT_EXAMPLES_DIR};
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_parallel_wheelrail";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_parallel_wheelrail");
+  const fs::path& dir = scratch.path();
   RunOptions one;
   one.output_dir = dir / "one";
   RunOptions two = one;
@@ -81,7 +78,6 @@ TEST(ParallelRun, WheelRailElementsInParallel) {
   const RunResult b = run_input_file(examples / "mbench_a22_left.inp", two);
   EXPECT_EQ(file_text(a.report_path), file_text(b.report_path));
   EXPECT_EQ(file_text(a.json_path), file_text(b.json_path));
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -11,12 +11,15 @@
 #include "format/inp/builtin_example.hpp"
 #include "rollcontact/errors.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
 
+/// Writes `text` to the file `name` in a scratch folder that lasts as long as the test program.
 std::filesystem::path write(const std::string& name, const std::string& text) {
-  const auto path = std::filesystem::temp_directory_path() / name;
+  static const test_support::ScratchDir scratch("rc-cost");
+  const auto path = scratch / name;
   std::ofstream(path) << text;
   return path;
 }
@@ -33,8 +36,6 @@ TEST(RunCost, GridElementsOfModule3) {
   const auto large = write("rc-cost-80.inp", replaced(base, "   40   40   ", "   80   80   "));
   EXPECT_DOUBLE_EQ(estimated_run_cost(small), 40.0 * 40.0);
   EXPECT_DOUBLE_EQ(estimated_run_cost(large), 4.0 * estimated_run_cost(small));
-  std::filesystem::remove(small);
-  std::filesystem::remove(large);
   EXPECT_THROW(estimated_run_cost("/nonexistent/x.inp"), InputError);
 }
 

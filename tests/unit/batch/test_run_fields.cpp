@@ -39,9 +39,8 @@ void expect_same_totals(const Solution& kept, const Solution& released) {
 }
 
 TEST(RunFields, ReleasedFieldsLeaveOutputsTotalsAndStatusAlone) {
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_run_fields";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_run_fields");
+  const fs::path& dir = scratch.path();
   // A shift sequence: each case continues from the previous one's tractions, which the solver
   // keeps itself; the released outcomes must not be what it continues from.
   std::ofstream(dir / "seq.toml") << R"(version = 1
@@ -87,14 +86,12 @@ hertz = { elements = [24, 24], semi_axes_mm = [3.0, 2.0], scale = 1.2 }
     EXPECT_EQ(kept.cases[k].solved, released.cases[k].solved);
   }
   EXPECT_NE(released.cases[1].solution.totals.fx, 0.0);
-  fs::remove_all(dir);
 }
 
 TEST(RunFields, WheelRailPatchesReleaseTheirFields) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_run_fields_wheelrail";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_run_fields_wheelrail");
+  const fs::path& dir = scratch.path();
   const auto [kept, released] = run_both(test_support::kExamples / "mbench_a22_right.inp", dir);
   ASSERT_EQ(kept.cases.size(), released.cases.size());
   EXPECT_EQ(file_text(kept.json_path), file_text(released.json_path));
@@ -112,7 +109,6 @@ TEST(RunFields, WheelRailPatchesReleaseTheirFields) {
     }
   }
   EXPECT_GT(patches, 20U);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "rollcontact/errors.hpp"
 #include "rollcontact/solve.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 #include "support/problem_compare.hpp"
 
 namespace rollcontact::batch {
@@ -46,8 +47,8 @@ TEST(TomlAcceptance, CattaneoCase1SolvesIdenticallyFromTomlAndInp) {
 
 TEST(TomlAcceptance, RunDispatchesOnTomlExtension) {
   REQUIRE_EXAMPLES();
-  const auto dir = std::filesystem::temp_directory_path() / "rollcontact_toml_run_test";
-  std::filesystem::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_toml_run_test");
+  const std::filesystem::path& dir = scratch.path();
   const auto problems = format::read_inp_file(examples_dir / "cattaneo.inp");
   format::write_toml_file(dir / "catt1.toml", {problems.at(0)});
   RunOptions options;
@@ -55,7 +56,6 @@ TEST(TomlAcceptance, RunDispatchesOnTomlExtension) {
   ASSERT_EQ(r.cases.size(), 1U);
   EXPECT_TRUE(r.cases[0].solved) << r.cases[0].error;
   EXPECT_TRUE(std::filesystem::exists(dir / "catt1.out"));
-  std::filesystem::remove_all(dir);
 }
 
 /// The cases written as TOML without their source lines (file, line numbers): two lists of

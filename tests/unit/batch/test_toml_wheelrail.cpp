@@ -15,6 +15,7 @@
 #include "format/toml/toml_case_writer.hpp"
 #include "rollcontact/errors.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
@@ -23,18 +24,17 @@ namespace fs = std::filesystem;
 const fs::path examples_dir{ROLLCONTACT_EXAMPLES_DIR};
 const fs::path toml_case = fs::path(ROLLCONTACT_TEST_DATA_DIR) / "toml" / "mbench_right_y3.toml";
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+/// `scratch` with the benchmark's two profiles copied in; returns its path.
+const fs::path& with_profiles(const test_support::ScratchDir& scratch) {
   for (const char* f : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
-    fs::copy_file(examples_dir / f, dir / f);
-  return dir;
+    fs::copy_file(examples_dir / f, scratch / f);
+  return scratch.path();
 }
 
 TEST(TomlWheelRail, SameForcesAsTheInpCase) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = scratch("rollcontact_toml_wheelrail");
+  const test_support::ScratchDir scratch("rollcontact_toml_wheelrail");
+  const fs::path& dir = with_profiles(scratch);
   fs::copy_file(toml_case, dir / "case.toml");
   // The .inp twin: case 1 of the benchmark file with the wheelset of its case 7.
   std::ifstream in(examples_dir / "mbench_a22_right.inp");
@@ -57,12 +57,12 @@ TEST(TomlWheelRail, SameForcesAsTheInpCase) {
   EXPECT_EQ(s.force_tr.z, t.force_tr.z);
   ASSERT_EQ(s.patches.size(), t.patches.size());
   EXPECT_EQ(s.patches[0].solution.totals.fn, t.patches[0].solution.totals.fn);
-  fs::remove_all(dir);
 }
 
 TEST(TomlWheelRail, ErrorsNameFileLineAndKey) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = scratch("rollcontact_toml_wheelrail_errors");
+  const test_support::ScratchDir scratch("rollcontact_toml_wheelrail_errors");
+  const fs::path& dir = with_profiles(scratch);
   std::ifstream in(toml_case);
   std::stringstream all;
   all << in.rdbuf();
@@ -81,7 +81,6 @@ TEST(TomlWheelRail, ErrorsNameFileLineAndKey) {
   }
   // Module-3-only readers refuse a wheel/rail case with a clear message.
   EXPECT_THROW((void)format::read_toml_file(toml_case), InputError);
-  fs::remove_all(dir);
 }
 
 TEST(TomlWheelRail, ConvertedBenchmarkFileGivesTheSameResults) {
@@ -229,9 +228,8 @@ TEST(TomlWheelRail, ReportsNameTheRollerAndTheFlexibleWheel) {
   // The .out report says WHEEL-ROLLER and TOTAL FORCES ON ROLLER on a roller rig, X_WS and
   // RPITCH in the wheelset block, and prints the deviations of a flexible wheel.
   const fs::path repo_examples = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
-  const fs::path out = fs::temp_directory_path() / "rollcontact_roller_report";
-  fs::remove_all(out);
-  fs::create_directories(out);
+  const test_support::ScratchDir scratch("rollcontact_roller_report");
+  const fs::path& out = scratch.path();
   RunOptions options;
   options.output_dir = out;
   auto report_of = [&](const char* name) {
@@ -251,7 +249,6 @@ TEST(TomlWheelRail, ReportsNameTheRollerAndTheFlexibleWheel) {
   const std::string flexible = report_of("flexible_wheelset.inp");
   EXPECT_NE(flexible.find(" FLEXIBLE WHEEL-SET DEVIATIONS"), std::string::npos);
   EXPECT_NE(flexible.find("     VXWHL       VYWHL"), std::string::npos);
-  fs::remove_all(out);
 }
 
 TEST(TomlWheelRail, MasslessRailRoundTrip) {

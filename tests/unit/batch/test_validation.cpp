@@ -16,6 +16,7 @@
 #include "batch/validation_tolerances.hpp"
 #include "rollcontact/errors.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
@@ -210,26 +211,6 @@ TEST(ValidationSummary, TableAndReasons) {
   EXPECT_FALSE(any_failed(fine));  // not supported alone is not a failure
 }
 
-class TemporaryFolder {
- public:
-  TemporaryFolder()
-      : path_(std::filesystem::temp_directory_path() /
-              ("rollcontact-test-validation-" +
-               std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TemporaryFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
 TEST(Validation, FindsTheExamples) {
   REQUIRE_EXAMPLES();
   const auto examples = find_examples(kExamples);
@@ -243,7 +224,7 @@ TEST(Validation, UnvalidatedFeaturesAreComparedOnRequest) {
   // supported; with solve_unvalidated (`validate --unvalidated`) solved and compared — where it
   // stands: the tread patch's FN 0.8 % above CONTACT's, outside the 0.5 % + 2 N.
   REQUIRE_EXAMPLES();
-  const TemporaryFolder out;
+  const test_support::ScratchDir out("validation");
   const ExampleFiles files{"mbench_a22_varfric", kExamples / "mbench_a22_varfric.inp",
                            kExamples / "mbench_a22_varfric.ref_out"};
   ValidationOptions options;
@@ -260,7 +241,7 @@ TEST(Validation, UnvalidatedFeaturesAreComparedOnRequest) {
 
 TEST(Validation, CattaneoCase1Passes) {
   REQUIRE_EXAMPLES();
-  const TemporaryFolder out;
+  const test_support::ScratchDir out("validation");
   const ExampleFiles files{"cattaneo", kExamples / "cattaneo.inp", kExamples / "cattaneo.ref_out"};
   const auto r = validate_example(files, out.path(), ValidationOptions{});
   EXPECT_TRUE(std::filesystem::exists(out.path() / "cattaneo.out"));  // never into DIR
@@ -274,7 +255,7 @@ TEST(Validation, ViscoelasticCylindersEqualContact) {
   // visc_cylindr: four viscoelastic cases (TC = 0, 0.009, 0.045, 2 s) and their two elastic
   // limits; CREEP X, APPROACH, PMAX and the element counts within the validation tolerances.
   REQUIRE_EXAMPLES();
-  const TemporaryFolder out;
+  const test_support::ScratchDir out("validation");
   const ExampleFiles files{"visc_cylindr", kExamples / "visc_cylindr.inp",
                            kExamples / "visc_cylindr.ref_out"};
   const auto r = validate_example(files, out.path(), ValidationOptions{});
@@ -287,7 +268,7 @@ TEST(Validation, ErtzTemperatureMatchesTheReferenceTemperatures) {
   // H=3 (c1-c3) and H=1 (c4), χ = π: the flash temperatures of physics.md §15 equal CONTACT's
   // MAX(T1,T2) 166.8, 75.00, 241.8, 90.85 to the printed digits (the table allows 1 %).
   REQUIRE_EXAMPLES();
-  const TemporaryFolder out;
+  const test_support::ScratchDir out("validation");
   const ExampleFiles files{"ertz_temperature", kExamples / "ertz_temperature.inp",
                            kExamples / "ertz_temperature.ref_out"};
   const auto r = validate_example(files, out.path(), ValidationOptions{});
@@ -305,7 +286,7 @@ TEST(Validation, ErtzTemperatureMatchesTheReferenceTemperatures) {
 
 TEST(Validation, UnreadableInputMakesEveryCaseNotSupported) {
   REQUIRE_EXAMPLES();
-  const TemporaryFolder out;
+  const test_support::ScratchDir out("validation");
   // A module-1 example (our reader rejects the whole file while module 1 is not supported);
   // whatever becomes of module 1, the example must yield its 21 reference cases.
   const auto dir = out.path() / "in";
@@ -327,7 +308,7 @@ TEST(Validation, UnreadableInputMakesEveryCaseNotSupported) {
 }
 
 TEST(Validation, EmptyFolderIsAnInputError) {
-  const TemporaryFolder out;
+  const test_support::ScratchDir out("validation");
   EXPECT_THROW(validate_folder(out.path(), ValidationOptions{}), InputError);
 }
 
@@ -335,7 +316,7 @@ TEST(Validation, EmptyFolderIsAnInputError) {
 // a folder where nothing could be compared all fail.
 TEST(Validation, GarbageReferenceFailsWithItsReason) {
   REQUIRE_EXAMPLES();
-  const TemporaryFolder tmp;
+  const test_support::ScratchDir tmp("validation");
   std::filesystem::copy_file(kExamples / "cattaneo.inp", tmp.path() / "cattaneo.inp");
   std::ofstream(tmp.path() / "cattaneo.ref_out") << "this is not a CONTACT report\n";
   ValidationOptions options;
@@ -350,7 +331,7 @@ TEST(Validation, GarbageReferenceFailsWithItsReason) {
 
 TEST(Validation, TruncatedReferenceFailsTheCasesItLacks) {
   REQUIRE_EXAMPLES();
-  const TemporaryFolder tmp;
+  const test_support::ScratchDir tmp("validation");
   std::filesystem::copy_file(kExamples / "cattaneo.inp", tmp.path() / "cattaneo.inp");
   {  // the reference up to (not including) its case 2
     std::ifstream in(kExamples / "cattaneo.ref_out");

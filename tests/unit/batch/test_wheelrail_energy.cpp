@@ -12,6 +12,7 @@
 #include "batch/run_input.hpp"
 #include "format/report/report_parser.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
@@ -27,9 +28,8 @@ double value_of(const format::Report& r, int number, const std::string& key) {
 
 TEST(WheelRailEnergy, ApproximatePressuresWithFastsimGiveContactsElasticEnergy) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_wheelrail_energy";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_wheelrail_energy");
+  const fs::path& dir = scratch.path();
   for (const char* name : {"mbench_a22_kpec.inp", "MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
     fs::copy_file(examples_dir / name, dir / name);
   const RunResult r = run_input_file(dir / "mbench_a22_kpec.inp", RunOptions{});
@@ -47,7 +47,6 @@ TEST(WheelRailEnergy, ApproximatePressuresWithFastsimGiveContactsElasticEnergy) 
     ASSERT_TRUE(expected > 0.0) << "case " << c;
     EXPECT_NEAR(value_of(ours, c, "patch 1/ELEN"), expected, 5e-3 * expected) << "case " << c;
   }
-  fs::remove_all(dir);
 }
 
 }  // namespace

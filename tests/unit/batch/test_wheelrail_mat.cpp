@@ -13,6 +13,7 @@
 
 #include "batch/run_input.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
@@ -62,8 +63,8 @@ std::vector<std::vector<double>> rows_of(const fs::path& p, std::vector<std::str
 
 TEST(WheelRailMat, OneFilePerPatchWithThePatchesPressures) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_wheelrail_mat";
-  fs::remove_all(dir);
+  const test_support::ScratchDir scratch("rollcontact_wheelrail_mat");
+  const fs::path& dir = scratch.path();
   RunOptions options;
   const RunResult r = run_input_file(write_case(dir / "right", 1), options);
   ASSERT_EQ(r.cases.size(), 1U);
@@ -90,13 +91,12 @@ TEST(WheelRailMat, OneFilePerPatchWithThePatchesPressures) {
   }
   EXPECT_FALSE(fs::exists(dir / "right" /
                           ("case.0001" + std::string(1, char('a' + patches.size())) + ".mat")));
-  fs::remove_all(dir);
 }
 
 TEST(WheelRailMat, LeftWheelRowsRunTheOtherWayAlongY) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_wheelrail_mat_left";
-  fs::remove_all(dir);
+  const test_support::ScratchDir scratch("rollcontact_wheelrail_mat_left");
+  const fs::path& dir = scratch.path();
   RunOptions options;
   const RunResult r = run_input_file(write_case(dir / "left", 0), options);
   ASSERT_TRUE(r.cases.at(0).solved) << r.cases[0].error;
@@ -112,16 +112,14 @@ TEST(WheelRailMat, LeftWheelRowsRunTheOtherWayAlongY) {
       EXPECT_NEAR(row[4], s.pn[source], 1e-5 * (1.0 + s.pn[source]));
       EXPECT_NEAR(row[6], -s.py[source], 1e-5 * (1.0 + std::abs(s.py[source])));
     }
-  fs::remove_all(dir);
 }
 
 /// M=3 (Fastsim): the header's FLX1–3 are the effective flexibilities the solver used (they
 /// derive from the patch's ellipse; the input has none), not zeros.
 TEST(WheelRailMat, FastsimHeaderHoldsTheEffectiveFlexibilities) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_wheelrail_mat_flx";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_wheelrail_mat_flx");
+  const fs::path& dir = scratch.path();
   for (const char* name : {"mbench_a22_kpec.inp", "MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
     fs::copy_file(examples_dir / name, dir / name);
   RunOptions options;
@@ -144,7 +142,6 @@ TEST(WheelRailMat, FastsimHeaderHoldsTheEffectiveFlexibilities) {
   EXPECT_NEAR(v[6], simp.flx2, 5e-6 * simp.flx2);
   EXPECT_NEAR(v[7], simp.flx3, 5e-6 * simp.flx3);
   EXPECT_EQ(v[8], 1.0);  // K0_MF as read
-  fs::remove_all(dir);
 }
 
 }  // namespace

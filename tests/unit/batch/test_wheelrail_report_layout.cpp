@@ -20,6 +20,7 @@
 
 #include "batch/run_input.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::batch {
 namespace {
@@ -78,9 +79,8 @@ std::vector<std::size_t> field_ends(const std::string& l) {
 }
 
 void expect_same_layout(const std::string& example) {
-  const fs::path dir = fs::temp_directory_path() / ("rollcontact_layout_" + example);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_layout_" + example);
+  const fs::path& dir = scratch.path();
   for (const std::string& name :
        {example + ".inp", std::string("MBench_UIC60_v3.prr"), std::string("MBench_S1002_v3.prw")})
     fs::copy_file(examples_dir / name, dir / name);
@@ -108,7 +108,6 @@ void expect_same_layout(const std::string& example) {
       }
     }
   }
-  fs::remove_all(dir);
 }
 
 TEST(WheelRailReportLayout, ApproximateMethodsAndFastsimAsContactPrintsThem) {
@@ -127,11 +126,9 @@ TEST(WheelRailReportLayout, RightAndLeftWheelsAsContactPrintsThem) {
   expect_same_layout("mbench_a22_left");
 }
 
-/// Case 1 of mbench_a22_right alone, with its H-G-I-A-O-W-R line replaced by `digits`, run in a
-/// fresh folder `dir` (case.inp, case.out there).
+/// Case 1 of mbench_a22_right alone, with its H-G-I-A-O-W-R line replaced by `digits`, run in an
+/// empty folder `dir` (case.inp, case.out there).
 RunResult run_right_case1(const fs::path& dir, const std::string& digits) {
-  fs::remove_all(dir);
-  fs::create_directories(dir);
   for (const char* name : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
     fs::copy_file(examples_dir / name, dir / name);
   std::ifstream in(examples_dir / "mbench_a22_right.inp");
@@ -147,7 +144,8 @@ RunResult run_right_case1(const fs::path& dir, const std::string& digits) {
 /// point gives them but for its own torsional moment MN.
 TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_layout_moments";
+  const test_support::ScratchDir scratch("rollcontact_layout_moments");
+  const fs::path& dir = scratch.path();
   const RunResult r = run_right_case1(dir, "0000421");
   ASSERT_EQ(r.cases.size(), 1U);
   ASSERT_TRUE(r.cases[0].solved) << r.cases[0].error;
@@ -180,7 +178,6 @@ TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
   const double mn = std::abs(w.solution.totals.mz);
   EXPECT_NEAR(s.moment_tr.x, d.y * f.z - d.z * f.y, mn + 1e-6 * std::abs(d.y * f.z));
   EXPECT_NEAR(s.moment_tr.z, d.x * f.y - d.y * f.x, mn + 1e-6 * std::abs(d.y * f.x));
-  fs::remove_all(dir);
 }
 
 /// O = 5 prints each patch's element table as module 3 does (spec/outputs.md §3.6, §3.8): one
@@ -189,7 +186,8 @@ TEST(WheelRailReportLayout, OutputFourPrintsTheMomentsAboutTheMarkers) {
 /// across them, so that its x- and y-differences give the spin.
 TEST(WheelRailReportLayout, OutputFivePrintsEachPatchsElementTable) {
   REQUIRE_EXAMPLES();
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_layout_elements";
+  const test_support::ScratchDir scratch("rollcontact_layout_elements");
+  const fs::path& dir = scratch.path();
   const RunResult r = run_right_case1(dir, "0000521");
   ASSERT_EQ(r.cases.size(), 1U);
   ASSERT_TRUE(r.cases[0].solved) << r.cases[0].error;
@@ -253,7 +251,6 @@ TEST(WheelRailReportLayout, OutputFivePrintsEachPatchsElementTable) {
   ASSERT_GT(b.x - a.x, 1.0);
   EXPECT_NEAR((b.wy - a.wy) / (b.x - a.x), phi, 0.02 * std::abs(phi));
   EXPECT_NEAR(a.wx, b.wx, 1e-3 * std::abs(a.wx) + 1e-9);  // ξ − φ·y: the same along a row
-  fs::remove_all(dir);
 }
 
 }  // namespace

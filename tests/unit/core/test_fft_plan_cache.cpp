@@ -2,7 +2,6 @@
 // is written and read back, and that plans read back transform bit for bit as planned ones.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <complex>
 #include <cstdlib>
@@ -15,6 +14,7 @@
 
 #include "core/fft_backend.hpp"
 #include "rollcontact/fft_plan_cache.hpp"
+#include "support/files.hpp"
 #include "support/random_field.hpp"
 
 #if ROLLCONTACT_HAVE_FFTW
@@ -76,9 +76,9 @@ std::vector<std::complex<double>> spectrum_of(const std::vector<double>& x, int 
 }
 
 TEST(FftPlanCache, WrittenAndReadBackWithTheSameTransforms) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("rollcontact-wisdom-test-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  // A folder that does not exist yet: the cache makes it.
+  const test_support::ScratchDir scratch("wisdom-test");
+  const std::filesystem::path dir = scratch / "wisdom";
   // A size no other test plans (210 = 2·3·5·7, 54 = 2·3³), so that this process must plan it.
   const int nf = 210, ns = 54;
   const std::vector<double> x = test_support::random_field(static_cast<std::size_t>(nf * ns), 7);
@@ -105,13 +105,11 @@ TEST(FftPlanCache, WrittenAndReadBackWithTheSameTransforms) {
       EXPECT_EQ(again[k].imag(), planned[k].imag()) << k;
     }
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(FftPlanCache, LargeFilesAreNotReadButReplaced) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("rollcontact-wisdom-large-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test_support::ScratchDir scratch("wisdom-large");
+  const std::filesystem::path& dir = scratch.path();
   fftw_forget_wisdom();  // this process's own wisdom stays short enough to be written
   // Valid wisdom padded beyond 32 kB with blank lines (which FFTW's reader skips).
   char* header = fftw_export_wisdom_to_string();
@@ -124,14 +122,11 @@ TEST(FftPlanCache, LargeFilesAreNotReadButReplaced) {
     spectrum_of(test_support::random_field(30 * 14, 3), 30, 14);
   }
   EXPECT_LT(std::filesystem::file_size(dir / "fftw-wisdom-double.txt"), large.size());
-  std::filesystem::remove_all(dir);
 }
 
 TEST(FftPlanCache, WisdomTooLongToReadAgainIsNotWritten) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("rollcontact-wisdom-long-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const test_support::ScratchDir scratch("wisdom-long");
+  const std::filesystem::path& dir = scratch.path();
   fftw_forget_wisdom();
   // A file a small run left: one size's plans.
   {
@@ -155,18 +150,15 @@ TEST(FftPlanCache, WisdomTooLongToReadAgainIsNotWritten) {
   std::ifstream again(dir / "fftw-wisdom-double.txt");
   const std::string kept((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
   EXPECT_EQ(kept, small);  // the small run's file still serves small runs
-  std::filesystem::remove_all(dir);
 }
 
 TEST(FftPlanCache, UnusableFilesAreIgnored) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("rollcontact-wisdom-bad-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test_support::ScratchDir scratch("wisdom-bad");
+  const std::filesystem::path& dir = scratch.path();
   std::ofstream(dir / "fftw-wisdom-double.txt") << "(fftw-0.0 not wisdom at all";
   std::ofstream(dir / "fftw-wisdom-float.txt") << "";
   const FftPlanCache wisdom(dir);
   EXPECT_FALSE(wisdom.imported());
-  std::filesystem::remove_all(dir);
 }
 #endif
 

@@ -6,19 +6,12 @@
 
 #include "format/text/atomic_file.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::format {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir(const char* name) {
-  const fs::path d =
-      fs::temp_directory_path() / fs::path(std::string("rollcontact_atomic_") + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -28,18 +21,19 @@ std::string slurp(const fs::path& p) {
 }
 
 TEST(AtomicFile, WritesAndReplacesWithoutLeftovers) {
-  const fs::path d = fresh_dir("replace");
+  const test_support::ScratchDir scratch("rollcontact_atomic_replace");
+  const fs::path& d = scratch.path();
   const fs::path f = d / "case.out";
   write_file_atomically(f, "first\n");
   EXPECT_EQ(slurp(f), "first\n");
   write_file_atomically(f, std::string("second\0line", 11));
   EXPECT_EQ(slurp(f), std::string("second\0line", 11));
   EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);
-  fs::remove_all(d);
 }
 
 TEST(AtomicFile, MissingFolderThrowsWithPath) {
-  const fs::path d = fresh_dir("missing");
+  const test_support::ScratchDir scratch("rollcontact_atomic_missing");
+  const fs::path& d = scratch.path();
   const fs::path f = d / "no_such_folder" / "x.out";
   try {
     write_file_atomically(f, "x");
@@ -48,15 +42,14 @@ TEST(AtomicFile, MissingFolderThrowsWithPath) {
     EXPECT_NE(std::string(e.what()).find(f.string()), std::string::npos) << e.what();
   }
   EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 0);
-  fs::remove_all(d);
 }
 
 TEST(AtomicFile, TargetIsAFolderThrowsAndCleansUp) {
-  const fs::path d = fresh_dir("isdir");
+  const test_support::ScratchDir scratch("rollcontact_atomic_isdir");
+  const fs::path& d = scratch.path();
   fs::create_directories(d / "taken");
   EXPECT_THROW(write_file_atomically(d / "taken", "x"), Error);
   EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);
-  fs::remove_all(d);
 }
 
 }  // namespace

@@ -44,11 +44,11 @@ TEST(BoundedReading, DevicesAndFoldersAreRefusedAtOnce) {
 }
 
 TEST(BoundedReading, FilesOverTheLimitAreRefusedBeforeReading) {
-  const fs::path big = fs::temp_directory_path() / "rc_bounded_big.inp";
+  const rollcontact::test_support::ScratchDir scratch("rc_bounded");
+  const fs::path big = scratch / "rc_bounded_big.inp";
   { std::ofstream(big) << "x"; }
   fs::resize_file(big, kMaxInputBytes + 1);  // sparse: costs no disk and no time
   const std::string m = error_of([&] { (void)read_input_file(big, "input file"); });
-  fs::remove(big);
   EXPECT_NE(m.find("more than the limit"), std::string::npos) << m;
 }
 

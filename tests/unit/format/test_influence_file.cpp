@@ -21,6 +21,7 @@
 #include "rollcontact/errors.hpp"
 #include "rollcontact/grid.hpp"
 #include "rollcontact/solve.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::format {
 namespace {
@@ -48,14 +49,6 @@ Table closed_form_table(int mx, int my, double dx, double dy, double nu, double 
             elastic::influence_coefficient(of[c], ix * dx, iy * dy, dx, dy, nu, k);
   }
   return t;
-}
-
-/// A fresh folder for one test's files.
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("rollcontact_inflcf_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
 }
 
 void write(const fs::path& path, const std::string& text) {
@@ -106,7 +99,8 @@ double relative_difference(const std::vector<double>& a, const std::vector<doubl
 /// larger or smaller than the grid: truncated or zero-padded); returns the largest relative
 /// difference of pn, px, py and the forces.
 double c9_against_c2(const std::string& name, const Case& c, int grow = 0) {
-  const fs::path dir = scratch(name);
+  const test_support::ScratchDir scratch("rollcontact_inflcf_" + name);
+  const fs::path& dir = scratch.path();
   const std::vector<CaseRecord> plain = read_inp_string(inp_text(c, false), "plain.inp", dir);
   const model::PatchProblem p2 = to_patch_problem(plain.at(0));
   const CombinedMaterial m = elastic::combine_bodies(p2.bodies, 1.0);
@@ -210,7 +204,8 @@ TEST(InfluenceFile, SmallerFilesAreZeroPaddedLargerOnesTruncated) {
 TEST(InfluenceFile, RollingStepOfPartElementsIsRefused) {
   // T=2: steady rolling (T=3) takes δq = δx (physics.md §14), a whole element always.
   const Case c = make_case("202100", "500.0 0.0005 -0.0003 0.0", "0.0 0.15 1000.0", kEqual);
-  const fs::path dir = scratch("part_step");
+  const test_support::ScratchDir scratch("rollcontact_inflcf_part_step");
+  const fs::path& dir = scratch.path();
   write(dir / "coefficients.txt",
         format_influence_file(closed_form_table(30, 20, 0.2, 0.25, 0.28, 0.0)));
   const model::PatchProblem p =
@@ -227,7 +222,8 @@ TEST(InfluenceFile, RollingStepOfPartElementsIsRefused) {
 
 TEST(InfluenceFile, MissingFileIsACaseErrorAndAnInputError) {
   const Case c = make_case("200100", "500.0 0.0 0.0 0.0", "", kEqual);
-  const fs::path dir = scratch("missing");
+  const test_support::ScratchDir scratch("rollcontact_inflcf_missing");
+  const fs::path& dir = scratch.path();
   const std::vector<CaseRecord> r = read_inp_string(inp_text(c, true), "f.inp", dir);
   EXPECT_NE(r.at(0).source.case_error.find("influence coefficient file 'coefficients.txt' not "
                                            "found"),
@@ -255,7 +251,8 @@ TEST(InfluenceFile, WrongElementSizeNamesTheLine) {
             "more than 1e-05 mm)");
   // Through the case: the grid's DX comes from the IPOTCN = 1 block.
   const Case c = make_case("200100", "500.0 0.0 0.0 0.0", "", kEqual);
-  const fs::path dir = scratch("wrong_dx");
+  const test_support::ScratchDir scratch("rollcontact_inflcf_wrong_dx");
+  const fs::path& dir = scratch.path();
   write(dir / "coefficients.txt",
         format_influence_file(closed_form_table(30, 20, 0.1, 0.25, 0.28, 0.0)));
   const CaseRecord r = read_inp_string(inp_text(c, true), "f.inp", dir).at(0);

@@ -16,6 +16,7 @@
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/to_wheelrail.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::format {
 namespace {
@@ -288,8 +289,8 @@ TEST(InpModule1, ProfileNamesWithWindowsSeparators) {
 }
 
 TEST(InpModule1, ErrorsInsideProfileFilesNameTheProfileFile) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_m1_profile_err";
-  std::filesystem::create_directories(dir);
+  const test_support::ScratchDir scratch("rc_m1_profile_err");
+  const std::filesystem::path& dir = scratch.path();
   { std::ofstream(dir / "bad.txt") << "0 0\n1 1\n2 oops\n"; }
   std::string text = first_case();
   text.replace(text.find("profiles/wheel_cone.txt"), 23, "bad.txt");
@@ -304,7 +305,6 @@ TEST(InpModule1, ErrorsInsideProfileFilesNameTheProfileFile) {
     EXPECT_NE(e.message().find("wheel profile named at m1.inp:13"), std::string::npos)
         << e.message();
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 
 #include "format/inp/inp_reader.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::format {
 namespace {
@@ -198,8 +199,8 @@ TEST(InpReader, ConformalC4IbaseIplanVariants) {
 }
 
 TEST(InpReader, C9FileResolvedAgainstBaseDir) {
-  const auto dir = std::filesystem::temp_directory_path() / "rollcontact_inp_reader_test";
-  std::filesystem::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_inp_reader_test");
+  const std::filesystem::path& dir = scratch.path();
   { std::ofstream(dir / "coef.txt") << "1 0\n"; }
   const std::string text =
       " 3 MODULE\n 201120\n 029020\n 0000541\n 100 100 30 1 1e-4\n 9.0 0.1 0.0 0.0\n 0.3 0.3\n"
@@ -211,7 +212,6 @@ TEST(InpReader, C9FileResolvedAgainstBaseDir) {
   EXPECT_NE(missing.at(0).source.case_error.find("t.inp:8: influence coefficient file 'coef.txt' "
                                                  "not found"),
             std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(InpReader, SubsurfaceColumnListsAreSortedAndUnique) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "format/report/mat_writer.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::format {
 namespace {
@@ -156,8 +157,8 @@ TEST(MatWriter, ShiftColumnAndFileName) {
 TEST(MatWriter, RunWritesCattaneoMat) {
   const std::filesystem::path examples = ROLLCONTACT_EXAMPLES_DIR;
   if (!std::filesystem::is_regular_file(examples / "cattaneo.inp")) GTEST_SKIP();
-  const std::filesystem::path out = std::filesystem::temp_directory_path() / "rc_mat_cattaneo";
-  std::filesystem::remove_all(out);
+  const test_support::ScratchDir scratch("rc_mat_cattaneo");
+  const std::filesystem::path& out = scratch.path();
   const std::string cmd = std::string(ROLLCONTACT_CLI) + " run \"" +
                           (examples / "cattaneo.inp").string() + "\" -o \"" + out.string() +
                           "\" -q";
@@ -174,7 +175,6 @@ TEST(MatWriter, RunWritesCattaneoMat) {
     ASSERT_EQ(v.size(), 11u) << lines[k];
     EXPECT_GE(v[1], 1);  // in contact
   }
-  std::filesystem::remove_all(out);
 }
 
 }  // namespace

@@ -16,26 +16,19 @@
 #include "format/profiles/profile_table.hpp"
 #include "rollcontact/errors.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::format {
 namespace {
 
 using test_support::kExamples;
 
-/// A temporary folder removed at the end of the test.
-struct TempDir {
-  std::filesystem::path path;
-  explicit TempDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / ("rc_profile_" + name)) {
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-  std::filesystem::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return path / name;
-  }
-};
+/// Writes `text` to the file `name` in `dir`; returns its path.
+std::filesystem::path write_file(const test_support::ScratchDir& dir, const std::string& name,
+                                 const std::string& text) {
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
 
 const char* kSimpackRail = R"(! comment
 header.begin
@@ -216,12 +209,13 @@ TEST(ProfileSlices, WheelflatSlices) {
 }
 
 TEST(ProfileSlices, FeaturesAndErrors) {
-  TempDir dir("slices");
-  dir.write("a.txt", "-20 2\n0 0\n20 2\n");
-  dir.write("b.txt", "-20 2.5\n0 0\n20 2.5\n");
-  const auto ok = dir.write("ok.slcs",
-                            "! rail slices\n 10.0 1.0\n 2\n 3 1 1\n 1\n 0.0 'a.txt'\n 5.0 'b.txt'\n"
-                            " 2\n 3\n 0.0 1 2 3\n 5.0 1.5 -1 3\n");
+  const test_support::ScratchDir dir("rc_profile_slices");
+  write_file(dir, "a.txt", "-20 2\n0 0\n20 2\n");
+  write_file(dir, "b.txt", "-20 2.5\n0 0\n20 2.5\n");
+  const auto ok =
+      write_file(dir, "ok.slcs",
+                 "! rail slices\n 10.0 1.0\n 2\n 3 1 1\n 1\n 0.0 'a.txt'\n 5.0 'b.txt'\n"
+                 " 2\n 3\n 0.0 1 2 3\n 5.0 1.5 -1 3\n");
   std::vector<std::string> w;
   const SlicedProfile sp = read_slices_file(ok, ProfileOptions{}, w);
   ASSERT_EQ(sp.u.size(), 2u);
@@ -232,7 +226,7 @@ TEST(ProfileSlices, FeaturesAndErrors) {
   EXPECT_DOUBLE_EQ(sp.features[1][1], -1.0);
 
   const auto missing =
-      dir.write("missing.slcs", " 0 1\n 2\n 0\n 1\n 0.0 'a.txt'\n 1.0 'nope.txt'\n");
+      write_file(dir, "missing.slcs", " 0 1\n 2\n 0\n 1\n 0.0 'a.txt'\n 1.0 'nope.txt'\n");
   try {
     read_slices_file(missing, ProfileOptions{}, w);
     FAIL();
@@ -241,9 +235,10 @@ TEST(ProfileSlices, FeaturesAndErrors) {
     EXPECT_EQ(e.line(), 6);
     EXPECT_NE(e.message().find("'nope.txt'"), std::string::npos);
   }
-  const auto decreasing = dir.write("dec.slcs", " 0 1\n 2\n 0\n 1\n 1.0 'a.txt'\n 0.0 'b.txt'\n");
+  const auto decreasing =
+      write_file(dir, "dec.slcs", " 0 1\n 2\n 0\n 1\n 1.0 'a.txt'\n 0.0 'b.txt'\n");
   EXPECT_THROW(read_slices_file(decreasing, ProfileOptions{}, w), InputError);
-  const auto too_many = dir.write("n.slcs", " 0 1\n 5000\n 0\n 1\n");
+  const auto too_many = write_file(dir, "n.slcs", " 0 1\n 5000\n 0\n 1\n");
   EXPECT_THROW(read_slices_file(too_many, ProfileOptions{}, w), InputError);
 }
 

@@ -13,6 +13,7 @@
 
 #include "rollcontact/creep_lookup.hpp"
 #include "rollcontact/errors.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact {
 namespace {
@@ -101,8 +102,8 @@ TEST(CreepLookup, MalformedGridsAreRejected) {
 
 TEST(CreepLookup, Hdf5RoundTripIsBitExact) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / "rollcontact_lookup_test";
-  fs::create_directories(dir);
+  const test_support::ScratchDir scratch("rollcontact_lookup_test");
+  const fs::path& dir = scratch.path();
   const CreepLookupTable t = test_table();
   save_creep_lookup(t, dir / "t.h5");
   EXPECT_FALSE(fs::exists(dir / "t.h5.part"));

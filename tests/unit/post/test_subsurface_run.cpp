@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "subs_table.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact::post {
 namespace {
@@ -38,8 +39,8 @@ std::vector<std::string> summaries(const std::vector<std::string>& lines) {
 TEST(SubsurfaceRun, SubsurfReportAndSubsFileMatchReference) {
   const fs::path examples = ROLLCONTACT_EXAMPLES_DIR;
   if (!fs::is_regular_file(examples / "subsurf.inp")) GTEST_SKIP();
-  const fs::path out = fs::temp_directory_path() / "rc_post_subsurf";
-  fs::remove_all(out);
+  const test_support::ScratchDir scratch("rc_post_subsurf");
+  const fs::path& out = scratch.path();
   const std::string cmd = std::string(ROLLCONTACT_CLI) + " run \"" +
                           (examples / "subsurf.inp").string() + "\" -o \"" + out.string() + "\" -q";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
@@ -69,7 +70,6 @@ TEST(SubsurfaceRun, SubsurfReportAndSubsFileMatchReference) {
   }
   // Case 1 (S = 3, MATFIL_S = 2) writes its own file.
   EXPECT_TRUE(fs::exists(out / "subsurf.0001.subs"));
-  fs::remove_all(out);
 }
 
 }  // namespace

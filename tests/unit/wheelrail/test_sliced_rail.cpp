@@ -17,6 +17,7 @@
 #include "format/inp/to_wheelrail.hpp"
 #include "rollcontact/errors.hpp"
 #include "rollcontact/wheelrail.hpp"
+#include "support/files.hpp"
 #include "wheelrail_problems.hpp"
 
 namespace rollcontact {
@@ -112,9 +113,8 @@ TEST(SlicedRail, SlicesFileThroughTheInpRoute) {
   // A crossing-nose-like rail: a crowned head that rises 0.4 mm over 200 mm, read from a .slcs
   // file of two plain tables; the case at S_WS = 100 mm solves, the wheel sits 0.2 mm higher
   // than on the first slice alone.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "rc_sliced_rail";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const test_support::ScratchDir scratch("rc_sliced_rail");
+  const std::filesystem::path& dir = scratch.path();
   auto crown = [](double dz) {
     std::string t;
     for (int i = -120; i <= 120; ++i) {
@@ -151,7 +151,6 @@ TEST(SlicedRail, SlicesFileThroughTheInpRoute) {
   // less the gap's fall s²R/2 = 9.2e-4 mm.
   EXPECT_NEAR(b.patches[0].reference_tr.x, 460.0 * 2e-3, 5e-3);
   EXPECT_NEAR(b.z_ws_mm - a.z_ws_mm, -0.2 - 0.5 * 4e-6 * 460.0, 3e-5);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "format/inp/to_wheelrail.hpp"
 #include "rollcontact/wheelrail.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 
 namespace rollcontact {
 namespace {
@@ -35,14 +36,11 @@ WheelRailSolution solve_heated(double vs) {
     if (n == 18) text += "  0.0 450.0 50e-3 7.85e-6\n  0.0 450.0 50e-3 7.85e-6\n";
   }
   text += " 0 MODULE\n";
-  const std::filesystem::path scratch = std::filesystem::temp_directory_path() / "rc_heat";
-  std::filesystem::remove_all(scratch);
-  std::filesystem::create_directories(scratch);
+  const test_support::ScratchDir scratch("rc_heat");
   for (const char* f : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
     std::filesystem::copy_file(dir / f, scratch / f);
   std::ofstream(scratch / "heat.inp") << text;
   const auto cases = format::read_input_cases(scratch / "heat.inp");
-  std::filesystem::remove_all(scratch);
   return WheelsetSolver().solve(
       format::to_wheelrail_problem(std::get<format::WheelRailRecord>(cases.at(0))));
 }

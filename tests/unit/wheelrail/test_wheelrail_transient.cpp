@@ -16,6 +16,7 @@
 #include "format/inp/to_wheelrail.hpp"
 #include "rollcontact/wheelrail.hpp"
 #include "support/examples.hpp"
+#include "support/files.hpp"
 #include "wheelrail_problems.hpp"
 
 namespace rollcontact {
@@ -128,9 +129,7 @@ TEST(WheelRailTransient, BenchmarkRolledThroughTheInpRoute) {
     text += " 1 MODULE\n 1002100\n 0111002\n 0100321\n  " + std::to_string(0.2 * step) +
             "  3.0  10000. -0.00018030 0.0072  0.0\n 2000. 0.0 0.0 0.0 0.0 -4.34515030\n";
   text += " 0 MODULE\n";
-  const std::filesystem::path scratch = std::filesystem::temp_directory_path() / "rc_transient";
-  std::filesystem::remove_all(scratch);
-  std::filesystem::create_directories(scratch);
+  const test_support::ScratchDir scratch("rc_transient");
   for (const char* f : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
     std::filesystem::copy_file(dir / f, scratch / f);
   const std::filesystem::path file = scratch / "transient.inp";
@@ -146,7 +145,6 @@ TEST(WheelRailTransient, BenchmarkRolledThroughTheInpRoute) {
   // CONTACT's steady answer (mbench_a22_right.ref_out case 7): FX(TR) -417.5, FY(TR) -1988 N.
   EXPECT_NEAR(last.force_tr.x, -417.5, 0.005 * 417.5);
   EXPECT_NEAR(last.force_tr.y, -1988.0, 0.005 * 1988.0);
-  std::filesystem::remove_all(scratch);
 }
 
 TEST(WheelRailTransient, ConformalRollingFromRestReachesTheConformalSteadyState) {
