@@ -1064,6 +1064,7 @@ tangential::TangentialResult CaseSolver::solve_on_grid(const tangential::Tangent
   settings.eps =
       problem_.tangential.prescribed == model::TangentialPrescribed::Creepages ? eps : 0.1 * eps;
   settings.max_iterations = problem_.solver.max_inner_iterations;
+  settings.slip_of_last_iterate = rough_;  // a rough solve's slip is not read
   TangentialSolverKind method = select_solver(problem_);
   if (method == TangentialSolverKind::SteadyGS) {
     // SteadyGS needs a free trailing column (the inflow of the previous-time field).

@@ -20,10 +20,18 @@ void TangentialOperator::apply(const std::vector<double>& px, const std::vector<
   product->apply(in, out);
 }
 
-void finalise(const TangentialSystem& sys, TangentialResult& res) {
+void finalise(const TangentialSystem& sys, TangentialResult& res, const std::vector<double>* sx,
+              const std::vector<double>* sy) {
   const std::size_t n = sys.grid.size();
   std::vector<double> ux(n), uy(n);
-  sys.a.apply(res.px, res.py, ux, uy);
+  if (sx != nullptr && sy != nullptr) {
+    for (std::size_t i = 0; i < n; ++i) {
+      ux[i] = (*sx)[i] - sys.bx[i];
+      uy[i] = (*sy)[i] - sys.by[i];
+    }
+  } else {
+    sys.a.apply(res.px, res.py, ux, uy);
+  }
   res.sx.assign(n, 0.0);
   res.sy.assign(n, 0.0);
   res.state.assign(n, ElementState::Exterior);

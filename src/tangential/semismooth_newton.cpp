@@ -126,7 +126,10 @@ class SemismoothNewton {
       py[i] = zy;
     }
     res.iterations = products;
-    finalise(sys_, res);
+    if (settings_.slip_of_last_iterate)
+      finalise(sys_, res, &sx_, &sy_);
+    else
+      finalise(sys_, res);
   }
 
  private:

@@ -56,6 +56,10 @@ struct TangentialSettings {
   int max_iterations = 999;
   double omega_h = 1.0, omega_s = 1.0;  ///< Gauss–Seidel relaxation in adhesion / slip
   int anderson_depth = 8;               ///< Anderson acceleration of the sweeps (0: off)
+  /// Semismooth Newton: the slip the iteration carries (b + A·p of the last iterate, before the
+  /// final projection onto the bounds) instead of one more product. For iterates whose slip
+  /// nobody reads (the vertical-force iteration's rough solves).
+  bool slip_of_last_iterate = false;
 };
 
 struct TangentialResult {
@@ -68,8 +72,10 @@ struct TangentialResult {
   std::string message;
 };
 
-/// Classifies and finalises a traction field: S = b + A p, states from |p| vs g.
-void finalise(const TangentialSystem& sys, TangentialResult& res);
+/// Classifies and finalises a traction field: S = b + A p, states from |p| vs g. With `sx`, `sy`
+/// (full-grid slip known already) they are taken for S instead of a product.
+void finalise(const TangentialSystem& sys, TangentialResult& res,
+              const std::vector<double>* sx = nullptr, const std::vector<double>* sy = nullptr);
 
 /// One Gauss–Seidel sweep (or other fixed-point map) applied to the tractions in place.
 using SweepFunction = std::function<void(std::vector<double>& px, std::vector<double>& py)>;

@@ -163,6 +163,36 @@ TEST(SteadyRolling, NewtonAgreesWithConvexGSOnTheNonSymmetricOperator) {
   EXPECT_LT(fx, 0.0);  // the traction opposes the creepage
 }
 
+// TangentialSettings::slip_of_last_iterate (rough solves): the same tractions and states, the
+// slip from the iteration instead of a product — equal to it up to the solve's tolerance.
+TEST(SteadyRolling, SlipOfTheLastIterateIsTheProductsUpToTheTolerance) {
+  CircularContact c(model::TangentialKind::SteadyRolling, 1e-4);
+  TangentialSettings rough;
+  rough.eps = 1e-2;
+  TangentialSettings carried = rough;
+  carried.slip_of_last_iterate = true;
+  const TangentialResult product = solve_semismooth_newton(c.sys, rough, nullptr, nullptr);
+  const TangentialResult iterate = solve_semismooth_newton(c.sys, carried, nullptr, nullptr);
+  ASSERT_TRUE(product.converged && iterate.converged);
+  EXPECT_EQ(iterate.px, product.px);
+  EXPECT_EQ(iterate.py, product.py);
+  EXPECT_EQ(iterate.state, product.state);
+  double worst = 0.0, largest = 0.0;
+  int slipping = 0;
+  for (std::size_t i = 0; i < product.sx.size(); ++i) {
+    worst =
+        std::max(worst, std::hypot(iterate.sx[i] - product.sx[i], iterate.sy[i] - product.sy[i]));
+    largest = std::max(largest, std::hypot(product.sx[i], product.sy[i]));
+    slipping += product.state[i] == ElementState::Slip;
+  }
+  EXPECT_GT(slipping, 0);
+  EXPECT_GT(largest, 0.0);
+  // The final projection moves p by at most the tolerance's share of it; the slip moves by that
+  // through A (|A| ~ 1/G per element: 1e-2 of μp₀/G ≈ 4e-5 mm here, against slips of ~1e-4).
+  EXPECT_LT(worst, 1e-2 * kMu * kP0 / 8.0e4);
+  EXPECT_GT(worst, 0.0);  // not the product again
+}
+
 // S = c + D·p with an anisotropic D: adhesion solves S = 0 inside the bound; slip puts p on the
 // bound, opposite to S.
 TEST(ElementProblem, AdhesionSolvesForZeroSlipAndSlipOpposesIt) {
