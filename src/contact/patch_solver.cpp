@@ -355,6 +355,9 @@ class CaseSolver {
   const Solution* map_sequence(model::TangentialKind kind);
   void solve_normal(const Field& px, const Field& py);
   normal::NormalSettings normal_settings() const;
+  /// The Hertz solution's pressures on `grid` for Hertzian geometries (physics.md §7.1), empty
+  /// when the geometry is not Hertzian or no element is loaded.
+  Field hertz_start(const Grid& grid) const;
   /// NormCG for h (the whole grid) from `initial` (or the Hertz, coarse-grid or geometric
   /// start), on a box of the grid where the contact is known to lie inside it.
   normal::NormalResult solve_normal_cg(const Field& h, normal::NormalLoad load, double value,
@@ -512,6 +515,8 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
   if (sol_.material.viscoelastic()) {
     // Viscoelastic rolling (M=1): A is not symmetric, NormCG does not apply
     // (active_set_solver.hpp).
+    const Field start = initial == nullptr ? hertz_start(grid_) : Field{};
+    if (!start.empty()) initial = &start;
     normal::ActiveSetNormalSolver solver(grid_, *ops.product);
     r = solver.solve(h_star, load, load_value, normal_settings(), initial, mat.nu, mat.g);
   } else {
@@ -544,6 +549,17 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     sol_.solver.converged = false;
     sol_.solver.message = r.message;
   }
+}
+
+Field CaseSolver::hertz_start(const Grid& grid) const {
+  if (!sol_.hertz.present) return {};
+  Field start(grid.size(), 0.0);
+  for (int iy = 0; iy < grid.my; ++iy)
+    for (int ix = 0; ix < grid.mx; ++ix)
+      start[grid.index(ix, iy)] =
+          geometry::hertz_pressure(sol_.hertz, grid.x_centre(ix), grid.y_centre(iy));
+  if (std::none_of(start.begin(), start.end(), [](double v) { return v > 0.0; })) return {};
+  return start;
 }
 
 normal::NormalSettings CaseSolver::normal_settings() const {
@@ -609,13 +625,9 @@ normal::NormalResult CaseSolver::solve_normal_cg(const Field& h, normal::NormalL
     initial_box = contact::restrict_to_box(*initial, grid_, *box);
     initial = &initial_box;
   }
-  if (initial == nullptr && sol_.hertz.present) {
-    start.assign(grid.size(), 0.0);
-    for (int iy = 0; iy < grid.my; ++iy)
-      for (int ix = 0; ix < grid.mx; ++ix)
-        start[grid.index(ix, iy)] =
-            geometry::hertz_pressure(sol_.hertz, grid.x_centre(ix), grid.y_centre(iy));
-    if (std::any_of(start.begin(), start.end(), [](double v) { return v > 0.0; })) initial = &start;
+  if (initial == nullptr) {
+    start = hertz_start(grid);
+    if (!start.empty()) initial = &start;
   }
   if (initial == nullptr) {
     int coarse_iterations = 0;
