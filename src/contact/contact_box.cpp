@@ -53,11 +53,8 @@ std::optional<ContactBox> interpenetration_box(const Grid& grid, const std::vect
 
 bool zero_outside(const std::vector<double>& full, const Grid& grid, const ContactBox& box) {
   for (int iy = 0; iy < grid.my; ++iy)
-    for (int ix = 0; ix < grid.mx; ++ix) {
-      const bool inside = ix >= box.ix0 && ix < box.ix0 + box.grid.mx && iy >= box.iy0 &&
-                          iy < box.iy0 + box.grid.my;
-      if (!inside && full[grid.index(ix, iy)] != 0.0) return false;
-    }
+    for (int ix = 0; ix < grid.mx; ++ix)
+      if (!box.contains(ix, iy) && full[grid.index(ix, iy)] != 0.0) return false;
   return true;
 }
 

@@ -21,6 +21,11 @@ namespace rollcontact::contact {
 struct ContactBox {
   int ix0 = 0, iy0 = 0;
   Grid grid;
+
+  /// True when element (ix, iy) of the full grid lies in the box.
+  bool contains(int ix, int iy) const noexcept {
+    return ix >= ix0 && ix < ix0 + grid.mx && iy >= iy0 && iy < iy0 + grid.my;
+  }
 };
 
 /// The box around the elements in contact with one free element on each side where the grid

@@ -652,10 +652,8 @@ normal::NormalResult CaseSolver::solve_normal_cg(const Field& h, normal::NormalL
   bool holds = true;
   for (int iy = 0; iy < grid_.my && holds; ++iy)
     for (int ix = 0; ix < grid_.mx && holds; ++ix) {
-      const bool in_box =
-          ix >= box->ix0 && ix < box->ix0 + grid.mx && iy >= box->iy0 && iy < box->iy0 + grid.my;
       const std::size_t i = grid_.index(ix, iy);
-      holds = in_box || h[i] + un[i] >= value;
+      holds = box->contains(ix, iy) || h[i] + un[i] >= value;
     }
   if (!holds) {
     // The contact reaches beyond the starting pressure's box (around the interpenetration only

@@ -23,13 +23,12 @@ void TangentialOperator::apply(const std::vector<double>& px, const std::vector<
 void finalise(const TangentialSystem& sys, TangentialResult& res, const std::vector<double>* sx,
               const std::vector<double>* sy) {
   const std::size_t n = sys.grid.size();
-  std::vector<double> ux(n), uy(n);
-  if (sx != nullptr && sy != nullptr) {
-    for (std::size_t i = 0; i < n; ++i) {
-      ux[i] = (*sx)[i] - sys.bx[i];
-      uy[i] = (*sy)[i] - sys.by[i];
-    }
-  } else {
+  // S = b + A·p, by a product unless the caller carries it.
+  const bool carried = sx != nullptr && sy != nullptr;
+  std::vector<double> ux, uy;
+  if (!carried) {
+    ux.resize(n);
+    uy.resize(n);
     sys.a.apply(res.px, res.py, ux, uy);
   }
   res.sx.assign(n, 0.0);
@@ -43,8 +42,8 @@ void finalise(const TangentialSystem& sys, TangentialResult& res, const std::vec
     const bool slip = physics::slips(std::hypot(res.px[i], res.py[i]), sys.bound[i]);
     res.state[i] = slip ? ElementState::Slip : ElementState::Adhesion;
     if (slip) {
-      res.sx[i] = sys.bx[i] + ux[i];
-      res.sy[i] = sys.by[i] + uy[i];
+      res.sx[i] = carried ? (*sx)[i] : sys.bx[i] + ux[i];
+      res.sy[i] = carried ? (*sy)[i] : sys.by[i] + uy[i];
     }
   }
 }
