@@ -68,8 +68,11 @@ KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vect
     return res;
   }
   const std::size_t mr = static_cast<std::size_t>(restart);
-  std::vector<std::vector<double>> v(mr + 1, std::vector<double>(n));
-  std::vector<std::vector<double>> h(mr + 1, std::vector<double>(mr, 0.0));
+  // The basis and the Hessenberg columns grow with the iteration: the Newton systems converge
+  // in a few steps, and a basis of `restart` + 1 vectors allocated and cleared up front cost
+  // more than the steps themselves (docs/benchmarks.md).
+  std::vector<std::vector<double>> v(1, std::vector<double>(n));
+  std::vector<std::vector<double>> h;  // h[j]: column j, rows 0..j+1
   std::vector<double> cs(mr), sn(mr), g(mr + 1), w(n), z(n), y(mr);
   std::vector<double> r = b;  // residual of the current x
   while (true) {
@@ -89,23 +92,28 @@ KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vect
       a(z, w);
       ++res.iterations;
       if (observer != nullptr && observer->applied) observer->applied(j);
+      if (h.size() <= j) h.emplace_back(j + 2, 0.0);
+      std::vector<double>& hj = h[j];
       for (std::size_t i = 0; i <= j; ++i) {  // modified Gram–Schmidt
-        h[i][j] = dot(w, v[i]);
-        for (std::size_t k = 0; k < n; ++k) w[k] -= h[i][j] * v[i][k];
+        hj[i] = dot(w, v[i]);
+        for (std::size_t k = 0; k < n; ++k) w[k] -= hj[i] * v[i][k];
       }
-      h[j + 1][j] = std::sqrt(dot(w, w));
-      if (h[j + 1][j] > 0.0)
-        for (std::size_t k = 0; k < n; ++k) v[j + 1][k] = w[k] / h[j + 1][j];
+      hj[j + 1] = std::sqrt(dot(w, w));
+      if (v.size() <= j + 1) v.emplace_back(n);
+      if (hj[j + 1] > 0.0)
+        for (std::size_t k = 0; k < n; ++k) v[j + 1][k] = w[k] / hj[j + 1];
+      else
+        std::fill(v[j + 1].begin(), v[j + 1].end(), 0.0);
       for (std::size_t i = 0; i < j; ++i) {  // previous Givens rotations
-        const double t = cs[i] * h[i][j] + sn[i] * h[i + 1][j];
-        h[i + 1][j] = -sn[i] * h[i][j] + cs[i] * h[i + 1][j];
-        h[i][j] = t;
+        const double t = cs[i] * hj[i] + sn[i] * hj[i + 1];
+        hj[i + 1] = -sn[i] * hj[i] + cs[i] * hj[i + 1];
+        hj[i] = t;
       }
-      const double den = std::hypot(h[j][j], h[j + 1][j]);
-      cs[j] = den > 0.0 ? h[j][j] / den : 1.0;
-      sn[j] = den > 0.0 ? h[j + 1][j] / den : 0.0;
-      h[j][j] = den;
-      h[j + 1][j] = 0.0;
+      const double den = std::hypot(hj[j], hj[j + 1]);
+      cs[j] = den > 0.0 ? hj[j] / den : 1.0;
+      sn[j] = den > 0.0 ? hj[j + 1] / den : 0.0;
+      hj[j] = den;
+      hj[j + 1] = 0.0;
       g[j + 1] = -sn[j] * g[j];
       g[j] = cs[j] * g[j];
       res.relative_residual = std::abs(g[j + 1]) / bnorm;
@@ -117,7 +125,7 @@ KrylovResult solve_gmres(const LinearMap& a, const LinearMap& m, const std::vect
     // x += M⁻¹ V y with H y = g (upper triangular, j columns).
     for (std::size_t i = j; i-- > 0;) {
       double s = g[i];
-      for (std::size_t l = i + 1; l < j; ++l) s -= h[i][l] * y[l];
+      for (std::size_t l = i + 1; l < j; ++l) s -= h[l][i] * y[l];
       y[i] = h[i][i] != 0.0 ? s / h[i][i] : 0.0;
     }
     std::fill(w.begin(), w.end(), 0.0);
