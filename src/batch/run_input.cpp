@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "batch/parallel.hpp"
+#include "batch/run_files.hpp"
 #include "format/inp/inp_reader.hpp"
 #include "format/inp/to_model.hpp"
 #include "format/inp/to_wheelrail.hpp"
@@ -210,12 +211,6 @@ std::vector<CaseOutcome> solve_in_parallel(const std::vector<format::InputCase>&
 namespace {
 
 /// What one case contributes to the run's report and JSON (its side files are written here).
-struct CaseOutput {
-  std::string report;
-  nlohmann::json json;
-  int failed = 0;  ///< 1: an error or not converged
-};
-
 CaseOutput render_case(const format::InputCase& input, const CaseOutcome& outcome,
                        const std::filesystem::path& output_stem) {
   const auto* m3 = std::get_if<format::CaseRecord>(&input);
@@ -266,25 +261,17 @@ void release_fields(CaseOutcome& outcome) {
   for (WheelRailPatch& patch : outcome.wheelrail.patches) release_fields(patch.solution);
 }
 
-/// Writes the report and JSON of all cases, in case order.
-void write_run_files(std::vector<CaseOutput>& outputs, const std::string& input_name,
-                     const std::filesystem::path& output_stem, RunResult& result) {
-  std::ostringstream report;
-  format::write_report_banner(report);
-  nlohmann::json cases = nlohmann::json::array();
-  for (CaseOutput& o : outputs) {
-    report << o.report;
-    if (!o.json.is_null()) cases.push_back(std::move(o.json));
-    result.failed += o.failed;
-  }
-  format::write_report_end(report);
-  result.report_path = output_stem;
-  result.report_path += ".out";
-  result.json_path = output_stem;
-  result.json_path += ".json";
-  format::write_file_atomically(result.report_path, report.str());
-  format::write_file_atomically(
-      result.json_path, format::results_document(input_name, std::move(cases)).dump(2) + "\n");
+/// The next case's outputs into the run's files.
+void add_output(RunFilesWriter& files, const CaseOutput& o, RunResult& result) {
+  files.add(o);
+  result.failed += o.failed;
+}
+
+/// The run's files complete and in place.
+void finish_files(RunFilesWriter& files, RunResult& result) {
+  files.finish();
+  result.report_path = files.report_path();
+  result.json_path = files.json_path();
 }
 
 /// Length-prefixed fields of the case outputs one process sends the root.
@@ -326,6 +313,7 @@ RunResult run_distributed(const std::vector<format::InputCase>& problems,
   });
   RunResult result;
   if (!d.is_root()) return result;
+  // The processes answer per sequence, not in case order: the root orders the outputs.
   std::vector<CaseOutput> outputs(problems.size());
   for (const std::string& blob : blobs) {
     for (std::size_t pos = 0; pos < blob.size();) {
@@ -337,7 +325,9 @@ RunResult run_distributed(const std::vector<format::InputCase>& problems,
       if (!json.empty()) o.json = nlohmann::json::parse(json);
     }
   }
-  write_run_files(outputs, input_name, output_stem, result);
+  RunFilesWriter files(output_stem, input_name);
+  for (const CaseOutput& o : outputs) add_output(files, o, result);
+  finish_files(files, result);
   return result;
 }
 
@@ -357,21 +347,21 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
     for (const CaseOutcome& c : solved) add_case_time(c, 0.0, result.timing);
     result.timing.solve += seconds_since(start);
   }
-  std::vector<CaseOutput> outputs;
-  outputs.reserve(problems.size());
+  // Each case's report and results go to the files as it finishes (RunFilesWriter).
+  RunFilesWriter files(output_stem, input_name);
   for (std::size_t k = 0; k < problems.size(); ++k) {
     start = std::chrono::steady_clock::now();
     CaseOutcome outcome = solved.empty() ? solve_one(problems[k], state) : std::move(solved[k]);
     if (solved.empty()) add_case_time(outcome, seconds_since(start), result.timing);
     start = std::chrono::steady_clock::now();
-    outputs.push_back(render_case(problems[k], outcome, output_stem));
+    add_output(files, render_case(problems[k], outcome, output_stem), result);
     result.timing.output += seconds_since(start);
     if (options.on_case) options.on_case(outcome, k, problems.size());
     if (!options.keep_fields) release_fields(outcome);
     result.cases.push_back(std::move(outcome));
   }
   start = std::chrono::steady_clock::now();
-  write_run_files(outputs, input_name, output_stem, result);
+  finish_files(files, result);
   result.timing.output += seconds_since(start);
   return result;
 }

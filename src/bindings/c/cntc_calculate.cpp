@@ -86,7 +86,7 @@ int calculate(Module3Problem& p) {
 /// (−33), then the solve (−25 contact search and geometry, −26 vertical-force iteration).
 int calculate(Module1Problem& p) {
   format::WheelRailRecord record = p.record;
-  if (record.rail.profile.y.empty() || !p.rail_error.empty() || record.wheel.profile.y.empty() ||
+  if (record.rail.profile->y.empty() || !p.rail_error.empty() || record.wheel.profile->y.empty() ||
       !p.wheel_error.empty()) {
     library().log("cntc_calculate: rail or wheel profile missing or invalid");
     return CNTC_err_profil;

@@ -76,7 +76,7 @@ CNTC_EXPORT void cntc_getprofilevalues(int* ire, int* itask, int* nints, int* ip
   const double ds_out = n_r >= 1 && rparam != nullptr ? rparam[0] : 1.0;
   const format::ProfileSpec& spec = wheel ? p->record.wheel : p->record.rail;
   const std::string& error = wheel ? p->wheel_error : p->rail_error;
-  const bool missing = spec.profile.y.empty() || !error.empty();
+  const bool missing = spec.profile->y.empty() || !error.empty();
   auto put = [&](const std::vector<double>& v, int offset) {
     for (std::size_t k = 0; k < v.size() && offset + static_cast<int>(k) < *lenarr; ++k)
       values[offset + static_cast<int>(k)] = v[k];
@@ -120,7 +120,7 @@ CNTC_EXPORT void cntc_getprofilevalues(int* ire, int* itask, int* nints, int* ip
   }
   try {
     const wheelrail::ProfileCurve curve(format::to_wheelrail_profile(spec), !wheel);
-    const Samples s = sample(curve, spec.profile, *itask == 9 ? 0 : isampl, ds_out);
+    const Samples s = sample(curve, *spec.profile, *itask == 9 ? 0 : isampl, ds_out);
     const int n = static_cast<int>(s.y.size());
     switch (*itask) {
       case 0:

@@ -55,8 +55,8 @@ void store_profile(
   std::vector<std::string> warnings;
   try {
     const format::ProfileOptions options{is_wheel, spec.mirror_y, spec.mirror_z, spec.scale_yz};
-    spec.profile = read(options, warnings);
-    const double length = format::profile_chord_length(spec.profile);
+    spec.profile = std::make_shared<const Profile>(read(options, warnings));
+    const double length = format::profile_chord_length(*spec.profile);
     if (!format::is_admissible_profile_length(length))
       throw GeometryError(fmt::format(
           "{} profile has a length of {:.6g} mm, outside 5..500 mm: the scale factor or the "

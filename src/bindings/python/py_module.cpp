@@ -60,8 +60,8 @@ void attach_profiles(const batch::RunResult& r, py::list& cases) {
     if (w == nullptr || !r.cases[k].solved) continue;
     py::dict d = cases[k];
     d["side"] = w->is_left() ? "left" : "right";
-    d["rail_profile"] = profile_points(w->rail.profile);
-    d["wheel_profile"] = profile_points(w->wheel.profile);
+    d["rail_profile"] = profile_points(*w->rail.profile);
+    d["wheel_profile"] = profile_points(*w->wheel.profile);
   }
 }
 
@@ -114,8 +114,8 @@ class Solver {
         d["case"] = w.case_number;
         d["module"] = 1;
         d["side"] = w.is_left() ? "left" : "right";
-        d["rail_profile"] = profile_points(w.rail.profile);
-        d["wheel_profile"] = profile_points(w.wheel.profile);
+        d["rail_profile"] = profile_points(*w.rail.profile);
+        d["wheel_profile"] = profile_points(*w.wheel.profile);
       }
       out.append(d);
     }

@@ -579,9 +579,9 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
   try {
     if (format == ProfileFormat::Slices) {
       ps.sliced = true;
-      ps.slices = read_slices_file(path, options, warnings);
+      ps.slices = std::make_shared<const SlicedProfile>(read_slices_file(path, options, warnings));
     } else {
-      ps.profile = read_profile_file(path, options, warnings);
+      ps.profile = std::make_shared<const Profile>(read_profile_file(path, options, warnings));
     }
   } catch (const InputError& e) {
     // Errors inside the profile file name that file; say where it was asked for.
@@ -601,9 +601,9 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
     }
   };
   if (ps.sliced) {
-    for (const Profile& prof : ps.slices.slices) check_chord(prof);
+    for (const Profile& prof : ps.slices->slices) check_chord(prof);
   } else {
-    check_chord(ps.profile);
+    check_chord(*ps.profile);
   }
   return ps;
 }

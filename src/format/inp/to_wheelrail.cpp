@@ -19,7 +19,7 @@ namespace {
 
 model::WheelRailProfile to_wheelrail_profile(const ProfileSpec& s) {
   model::WheelRailProfile p;
-  p.points = s.profile;
+  p.points = *s.profile;
   p.smoothing.method = s.ismooth;
   p.smoothing.smooth = s.smooth;
   p.smoothing.zigzag_threshold_rad = s.zigthrs;
@@ -98,11 +98,11 @@ model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r, bool solv
   p.rail = to_wheelrail_profile(r.rail);
   p.wheel = to_wheelrail_profile(r.wheel);
   if (r.wheel.sliced) {
-    p.wheel.slices = r.wheel.slices;
+    p.wheel.slices = *r.wheel.slices;
     if (!p.wheel.slices.slices.empty()) p.wheel.points = p.wheel.slices.slices.front();
   }
   if (r.rail.sliced) {
-    p.rail.slices = r.rail.slices;
+    p.rail.slices = *r.rail.slices;
     if (!p.rail.slices.slices.empty()) p.rail.points = p.rail.slices.slices.front();
   }
   const TrackDimensions& tr = r.track;

@@ -5,6 +5,7 @@
 // in mm/s, angular velocities in rad/s.
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -65,8 +66,11 @@ struct ProfileSpec {
   int errhnd = 0;                                 ///< error handling verbosity -2..1
   double maxomit = 0.5;  ///< max fraction of points removed in clean-up [0..1]
   bool sliced = false;   ///< true: `slices` holds the profile (.slcs/.slcw), else `profile`
-  Profile profile;
-  SlicedProfile slices;
+  /// The points as read, never null. Shared and immutable: every later case that keeps the
+  /// profile copies its record from the one before (spec/inp-format.md §5), and a sweep of
+  /// thousands of cases holds one copy of each profile instead of one per case.
+  std::shared_ptr<const Profile> profile = std::make_shared<const Profile>();
+  std::shared_ptr<const SlicedProfile> slices = std::make_shared<const SlicedProfile>();
 };
 
 /// Rail deviations and their rates (Z=2,3).

@@ -121,10 +121,10 @@ void write_profile_reading(std::ostream& os, const WheelRailRecord& r) {
       return;
     }
     line(os, fmt::format(" Reading file \"{}\" with profile slices", ps.file));
-    if (!ps.slices.u.empty())
-      line(os, fmt::format(" obtained {} slices, {} = [{}, {}]", ps.slices.u.size(),
+    if (!ps.slices->u.empty())
+      line(os, fmt::format(" obtained {} slices, {} = [{}, {}]", ps.slices->u.size(),
                            std::string_view(body).starts_with("rail") ? "s" : "th",
-                           g12(ps.slices.u.front()), g12(ps.slices.u.back())));
+                           g12(ps.slices->u.front()), g12(ps.slices->u.back())));
   };
   if (reads_rail_profile(r)) reading("rail ", r.rail);
   if (reads_wheel_profile(r)) reading("wheel", r.wheel);

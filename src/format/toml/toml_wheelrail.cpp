@@ -64,7 +64,7 @@ ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, const Co
       t.fail_key("file", fmt::format("profile file '{}' not found", *file));
     if (profile_format_of(path) == ProfileFormat::Slices)
       t.fail_key("file", "variable profiles (slices files) are not supported in TOML yet");
-    ps.profile = read_profile_file(path, options, warnings);
+    ps.profile = std::make_shared<const Profile>(read_profile_file(path, options, warnings));
   } else {
     RawProfile raw;
     raw.file = t.key_path("points");
@@ -74,9 +74,9 @@ ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, const Co
       points->fail("y_mm and z_mm need the same number (at least 2) of values");
     points->finish();
     ps.file = raw.file;
-    ps.profile = finish_profile(raw, options, warnings);
+    ps.profile = std::make_shared<const Profile>(finish_profile(raw, options, warnings));
   }
-  const double chord = profile_chord_length(ps.profile);
+  const double chord = profile_chord_length(*ps.profile);
   if (!is_admissible_profile_length(chord))
     t.fail(
         fmt::format("the {} profile has a length of {:.6g} mm, outside 5..500 mm (check scale "

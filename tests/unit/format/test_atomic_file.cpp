@@ -52,6 +52,34 @@ TEST(AtomicFile, TargetIsAFolderThrowsAndCleansUp) {
   EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);
 }
 
+TEST(AtomicFile, PiecesAppearOnlyAtCommit) {
+  const test_support::ScratchDir scratch("rollcontact_atomic_pieces");
+  const fs::path& d = scratch.path();
+  const fs::path f = d / "run.out";
+  write_file_atomically(f, "previous run\n");
+  {
+    AtomicFileWriter w(f);
+    w.append("case 1\n");
+    w.append("case 2\n");
+    EXPECT_EQ(slurp(f), "previous run\n");  // the old file stays until the new one is whole
+    w.commit();
+  }
+  EXPECT_EQ(slurp(f), "case 1\ncase 2\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);
+}
+
+TEST(AtomicFile, AnUncommittedWriterLeavesNothing) {
+  // A run that fails half-way: neither half a file nor its temporary remains.
+  const test_support::ScratchDir scratch("rollcontact_atomic_uncommitted");
+  const fs::path& d = scratch.path();
+  {
+    AtomicFileWriter w(d / "run.out");
+    w.append("case 1\n");
+    EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 1);
+  }
+  EXPECT_EQ(std::distance(fs::directory_iterator(d), fs::directory_iterator()), 0);
+}
+
 }  // namespace
 }  // namespace rollcontact::format
 

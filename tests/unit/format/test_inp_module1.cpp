@@ -82,10 +82,10 @@ TEST(InpModule1, OptionalValuesAndDefaults) {
   EXPECT_DOUBLE_EQ(c.wheel.maxomit, 0.25);
   EXPECT_EQ(c.rail.prfopt, 0);
   EXPECT_DOUBLE_EQ(c.rail.zigthrs, 5.0 * std::numbers::pi / 6.0);
-  EXPECT_EQ(c.rail.profile.y.size(), 61u);
-  EXPECT_DOUBLE_EQ(c.rail.profile.y.front(), -30.0);
-  EXPECT_EQ(c.wheel.profile.y.size(), 61u);
-  EXPECT_DOUBLE_EQ(c.wheel.profile.y.front(), 60.0);
+  EXPECT_EQ(c.rail.profile->y.size(), 61u);
+  EXPECT_DOUBLE_EQ(c.rail.profile->y.front(), -30.0);
+  EXPECT_EQ(c.wheel.profile->y.size(), 61u);
+  EXPECT_DOUBLE_EQ(c.wheel.profile->y.front(), 60.0);
   EXPECT_DOUBLE_EQ(c.motion.y, 1.5);
   EXPECT_DOUBLE_EQ(c.motion.pitch, 0.3 * kDeg);
   EXPECT_DOUBLE_EQ(c.motion.vz, 0.2);
@@ -116,12 +116,16 @@ TEST(InpModule1, KeepSemanticsAndOverrides) {
   EXPECT_DOUBLE_EQ(c2.motion.vpitch, -4.2);
   EXPECT_DOUBLE_EQ(c2.discretisation.ds, 0.25);
   EXPECT_DOUBLE_EQ(c2.wheelset.ytape, 12.5);
-  EXPECT_EQ(c2.rail.profile.y.size(), 61u);
+  EXPECT_EQ(c2.rail.profile->y.size(), 61u);
   EXPECT_EQ(c2.npot_max, 5000);
   // E=0 keeps position and velocity too.
   const format::WheelRailRecord& c3 = wr(cases, 2);
   EXPECT_DOUBLE_EQ(c3.motion.y, 2.5);
   EXPECT_EQ(c3.case_number, 3);
+  // A kept profile is the same data, not a copy: thousands of cases hold one profile.
+  EXPECT_EQ(c2.rail.profile.get(), c1.rail.profile.get());
+  EXPECT_EQ(c3.rail.profile.get(), c1.rail.profile.get());
+  EXPECT_EQ(c3.wheel.profile.get(), c1.wheel.profile.get());
 }
 
 /// The line and message of the InputError reading `text` throws (0, "" if none).
@@ -285,7 +289,7 @@ TEST(InpModule1, ProfileNamesWithWindowsSeparators) {
   const auto cases = read(text + " 0 MODULE\n");
   ASSERT_EQ(cases.size(), 1u);
   EXPECT_EQ(std::filesystem::path(wr(cases, 0).rail.path).filename(), "rail_arc.txt");
-  EXPECT_GE(wr(cases, 0).rail.profile.y.size(), 2u);
+  EXPECT_GE(wr(cases, 0).rail.profile->y.size(), 2u);
 }
 
 TEST(InpModule1, ErrorsInsideProfileFilesNameTheProfileFile) {

@@ -49,8 +49,8 @@ TEST(InpModule1Examples, CaseCounts) {
       EXPECT_EQ(cases[k].source.file, (kExamples / ex.file).string());
       EXPECT_GT(cases[k].source.module_line, 0);
       // Every case has a rail and a wheel profile (stored from case 1 where kept).
-      EXPECT_GE(cases[k].rail.profile.y.size() + cases[k].rail.slices.slices.size(), 2u);
-      EXPECT_TRUE(cases[k].wheel.sliced || cases[k].wheel.profile.y.size() >= 2u);
+      EXPECT_GE(cases[k].rail.profile->y.size() + cases[k].rail.slices->slices.size(), 2u);
+      EXPECT_TRUE(cases[k].wheel.sliced || cases[k].wheel.profile->y.size() >= 2u);
     }
   }
 }
@@ -114,18 +114,18 @@ TEST(InpModule1Examples, MbenchLeftCase1AsAnnotated) {
   EXPECT_DOUBLE_EQ(c.rail.smooth, 0.0);
   EXPECT_EQ(c.rail.mirror_z, 0);
   EXPECT_FALSE(c.rail.sliced);
-  EXPECT_EQ(c.rail.profile.format, ProfileFormat::Simpack);
-  EXPECT_EQ(c.rail.profile.y.size(), 495u);
-  EXPECT_LT(c.rail.profile.y.front(), c.rail.profile.y.back());  // rail: ascending y
+  EXPECT_EQ(c.rail.profile->format, ProfileFormat::Simpack);
+  EXPECT_EQ(c.rail.profile->y.size(), 495u);
+  EXPECT_LT(c.rail.profile->y.front(), c.rail.profile->y.back());  // rail: ascending y
   EXPECT_DOUBLE_EQ(c.rail_deviations.dy, 0.0);
   EXPECT_DOUBLE_EQ(c.wheelset.fbdist, 1360.0);
   EXPECT_DOUBLE_EQ(c.wheelset.fbpos, -70.0);
   EXPECT_DOUBLE_EQ(c.wheelset.nomradw, 460.0);
   EXPECT_DOUBLE_EQ(c.wheelset.ytape, 1000.0);
   EXPECT_EQ(c.wheel.file, "MBench_S1002_v3.prw");
-  EXPECT_EQ(c.wheel.profile.format, ProfileFormat::Simpack);
-  EXPECT_EQ(c.wheel.profile.y.size(), 399u);  // one of 400 points repeats its predecessor
-  EXPECT_GT(c.wheel.profile.y.front(), c.wheel.profile.y.back());  // wheel: descending y
+  EXPECT_EQ(c.wheel.profile->format, ProfileFormat::Simpack);
+  EXPECT_EQ(c.wheel.profile->y.size(), 399u);  // one of 400 points repeats its predecessor
+  EXPECT_GT(c.wheel.profile->y.front(), c.wheel.profile->y.back());  // wheel: descending y
   EXPECT_DOUBLE_EQ(c.motion.s, 0.0);
   EXPECT_DOUBLE_EQ(c.motion.y, 0.0);
   EXPECT_DOUBLE_EQ(c.motion.fz, 10000.0);
@@ -146,7 +146,7 @@ TEST(InpModule1Examples, MbenchLeftCase1AsAnnotated) {
   EXPECT_DOUBLE_EQ(c2.motion.vpitch, -4.34741340);
   EXPECT_DOUBLE_EQ(c2.discretisation.dx, 0.2);  // kept
   EXPECT_DOUBLE_EQ(c2.friction.fkin, 0.3);      // kept
-  EXPECT_EQ(c2.rail.profile.y.size(), 495u);    // kept
+  EXPECT_EQ(c2.rail.profile->y.size(), 495u);   // kept
   EXPECT_EQ(c2.solver.maxgs, 999);              // kept
   EXPECT_TRUE(c2.source.warnings.empty());
   EXPECT_DOUBLE_EQ(cases.at(20).motion.y, 10.0);
@@ -213,12 +213,12 @@ TEST(InpModule1Examples, WheelflatSlicesAndPitch) {
   EXPECT_DOUBLE_EQ(c.discretisation.dx, 0.4);
   EXPECT_DOUBLE_EQ(c.track.cant, 0.02);
   EXPECT_EQ(c.rail.mirror_z, -1);
-  EXPECT_EQ(c.rail.profile.format, ProfileFormat::Simpack);
+  EXPECT_EQ(c.rail.profile->format, ProfileFormat::Simpack);
   EXPECT_DOUBLE_EQ(c.wheelset.nomradw, 490.0);
   EXPECT_TRUE(c.wheel.sliced);
   EXPECT_EQ(c.wheel.mirror_z, -1);
   EXPECT_DOUBLE_EQ(c.wheel.smooth, 5.0);
-  const SlicedProfile& sp = c.wheel.slices;
+  const SlicedProfile& sp = *c.wheel.slices;
   ASSERT_EQ(sp.slices.size(), 258u);
   ASSERT_EQ(sp.u.size(), 258u);
   EXPECT_EQ(sp.u_intpol, 2);
