@@ -173,39 +173,6 @@ std::vector<std::vector<std::size_t>> sequence_groups(
   return groups;
 }
 
-/// The cases solved on `threads` workers: each sequence (module and result element) in its
-/// order on one worker, the sequences in parallel. The solvers are made before the workers
-/// start, so that each worker only touches its own.
-std::vector<CaseOutcome> solve_in_parallel(const std::vector<format::InputCase>& problems,
-                                           RunState& state, const RunOptions& options) {
-  for (const format::InputCase& c : problems) {
-    if (const auto* m3 = std::get_if<format::CaseRecord>(&c))
-      state.patch_solvers.try_emplace(m3->result_element, options.solve);
-    else
-      state.wheelset_solvers.try_emplace(std::get<format::WheelRailRecord>(c).result_element,
-                                         options.solve);
-  }
-  const std::vector<std::vector<std::size_t>> groups = sequence_groups(problems);
-  std::vector<CaseOutcome> outcomes(problems.size());
-  std::atomic<std::size_t> done{0};
-  ParallelOptions parallel;
-  parallel.threads = options.threads;
-  parallel.schedule = Schedule::Dynamic;
-  std::function<void(std::size_t)> progress;
-  if (options.on_progress)
-    progress = [&](std::size_t) { options.on_progress(done.load(), problems.size()); };
-  parallel_for(
-      groups.size(), parallel,
-      [&](std::size_t, std::size_t g) {
-        for (const std::size_t k : groups[g]) {
-          outcomes[k] = solve_one(problems[k], state);
-          ++done;
-        }
-      },
-      progress);
-  return outcomes;
-}
-
 }  // namespace
 
 namespace {
@@ -259,6 +226,54 @@ void release_fields(Solution& s) {
 void release_fields(CaseOutcome& outcome) {
   release_fields(outcome.solution);
   for (WheelRailPatch& patch : outcome.wheelrail.patches) release_fields(patch.solution);
+}
+
+/// A case solved on a worker, with what it contributes to the run's files.
+struct SolvedCase {
+  CaseOutcome outcome;
+  CaseOutput output;
+  double output_seconds = 0.0;  ///< making `output` (and the case's side files)
+};
+
+/// The cases solved on `threads` workers: each sequence (module and result element) in its
+/// order on one worker, the sequences in parallel. The solvers are made before the workers
+/// start, so that each worker only touches its own. Each worker also makes its cases' outputs
+/// and, without keep_fields, releases their fields at once: the run then holds the cases'
+/// outputs until they are written in order, not their fields.
+std::vector<SolvedCase> solve_in_parallel(const std::vector<format::InputCase>& problems,
+                                          RunState& state, const RunOptions& options,
+                                          const std::filesystem::path& output_stem) {
+  for (const format::InputCase& c : problems) {
+    if (const auto* m3 = std::get_if<format::CaseRecord>(&c))
+      state.patch_solvers.try_emplace(m3->result_element, options.solve);
+    else
+      state.wheelset_solvers.try_emplace(std::get<format::WheelRailRecord>(c).result_element,
+                                         options.solve);
+  }
+  const std::vector<std::vector<std::size_t>> groups = sequence_groups(problems);
+  std::vector<SolvedCase> solved(problems.size());
+  std::atomic<std::size_t> done{0};
+  ParallelOptions parallel;
+  parallel.threads = options.threads;
+  parallel.schedule = Schedule::Dynamic;
+  std::function<void(std::size_t)> progress;
+  if (options.on_progress)
+    progress = [&](std::size_t) { options.on_progress(done.load(), problems.size()); };
+  parallel_for(
+      groups.size(), parallel,
+      [&](std::size_t, std::size_t g) {
+        for (const std::size_t k : groups[g]) {
+          SolvedCase& c = solved[k];
+          c.outcome = solve_one(problems[k], state);
+          const auto start = std::chrono::steady_clock::now();
+          c.output = render_case(problems[k], c.outcome, output_stem);
+          c.output_seconds = seconds_since(start);
+          if (!options.keep_fields) release_fields(c.outcome);
+          ++done;
+        }
+      },
+      progress);
+  return solved;
 }
 
 /// The next case's outputs into the run's files.
@@ -340,19 +355,27 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
     return run_distributed(problems, input_name, output_stem, options);
   RunResult result;
   RunState state{options, {}, {}};
-  std::vector<CaseOutcome> solved;
-  auto start = std::chrono::steady_clock::now();
-  if (options.threads > 1) {
-    solved = solve_in_parallel(problems, state, options);
-    for (const CaseOutcome& c : solved) add_case_time(c, 0.0, result.timing);
-    result.timing.solve += seconds_since(start);
-  }
   // Each case's report and results go to the files as it finishes (RunFilesWriter).
   RunFilesWriter files(output_stem, input_name);
-  for (std::size_t k = 0; k < problems.size(); ++k) {
+  auto start = std::chrono::steady_clock::now();
+  if (options.threads > 1) {
+    std::vector<SolvedCase> solved = solve_in_parallel(problems, state, options, output_stem);
+    for (const SolvedCase& c : solved) add_case_time(c.outcome, 0.0, result.timing);
+    result.timing.solve += seconds_since(start);
+    for (std::size_t k = 0; k < solved.size(); ++k) {
+      SolvedCase& c = solved[k];
+      start = std::chrono::steady_clock::now();
+      add_output(files, c.output, result);
+      c.output = CaseOutput{};
+      result.timing.output += seconds_since(start) + c.output_seconds;
+      if (options.on_case) options.on_case(c.outcome, k, problems.size());
+      result.cases.push_back(std::move(c.outcome));
+    }
+  }
+  for (std::size_t k = 0; options.threads <= 1 && k < problems.size(); ++k) {
     start = std::chrono::steady_clock::now();
-    CaseOutcome outcome = solved.empty() ? solve_one(problems[k], state) : std::move(solved[k]);
-    if (solved.empty()) add_case_time(outcome, seconds_since(start), result.timing);
+    CaseOutcome outcome = solve_one(problems[k], state);
+    add_case_time(outcome, seconds_since(start), result.timing);
     start = std::chrono::steady_clock::now();
     add_output(files, render_case(problems[k], outcome, output_stem), result);
     result.timing.output += seconds_since(start);

@@ -59,7 +59,7 @@ struct RunOptions {
   /// RunResult::cases. False (the command-line program, which has written them to the report
   /// and JSON): each outcome keeps its flags, totals, statistics and solver report, but its
   /// fields are released once its outputs are made, so that a run's memory does not grow with
-  /// its number of cases.
+  /// its number of cases (with threads > 1 by the worker, before on_case sees the outcome).
   bool keep_fields = true;
 };
 

@@ -20,8 +20,10 @@ namespace fs = std::filesystem;
 using test_support::file_text;
 
 /// Two runs of `input`, keeping and releasing the fields, into folders below `dir`.
-std::pair<RunResult, RunResult> run_both(const fs::path& input, const fs::path& dir) {
+std::pair<RunResult, RunResult> run_both(const fs::path& input, const fs::path& dir,
+                                         int threads = 1) {
   RunOptions keep;
+  keep.threads = threads;
   keep.output_dir = dir / "keep";
   RunOptions release = keep;
   release.output_dir = dir / "release";
@@ -71,21 +73,25 @@ body2 = { poisson = 0.28, shear_modulus_MPa = 82000.0 }
 [case.grid]
 hertz = { elements = [24, 24], semi_axes_mm = [3.0, 2.0], scale = 1.2 }
 )";
-  const auto [kept, released] = run_both(dir / "seq.toml", dir);
-  ASSERT_EQ(kept.cases.size(), 2U);
-  ASSERT_EQ(released.cases.size(), 2U);
-  EXPECT_EQ(file_text(kept.report_path), file_text(released.report_path));
-  EXPECT_EQ(file_text(kept.json_path), file_text(released.json_path));
-  for (std::size_t k = 0; k < 2; ++k) {
-    const Solution& a = kept.cases[k].solution;
-    const Solution& b = released.cases[k].solution;
-    EXPECT_EQ(a.pn.size(), 24U * 24U);
-    EXPECT_TRUE(b.pn.empty() && b.px.empty() && b.ux.empty() && b.h.empty() && b.state.empty());
-    EXPECT_EQ(b.pn.capacity(), 0U) << "released, not only cleared";
-    expect_same_totals(a, b);
-    EXPECT_EQ(kept.cases[k].solved, released.cases[k].solved);
+  // One thread, and two: the workers make the outputs and release the fields themselves.
+  for (const int threads : {1, 2}) {
+    const auto [kept, released] =
+        run_both(dir / "seq.toml", dir / ("threads" + std::to_string(threads)), threads);
+    ASSERT_EQ(kept.cases.size(), 2U);
+    ASSERT_EQ(released.cases.size(), 2U);
+    EXPECT_EQ(file_text(kept.report_path), file_text(released.report_path));
+    EXPECT_EQ(file_text(kept.json_path), file_text(released.json_path));
+    for (std::size_t k = 0; k < 2; ++k) {
+      const Solution& a = kept.cases[k].solution;
+      const Solution& b = released.cases[k].solution;
+      EXPECT_EQ(a.pn.size(), 24U * 24U);
+      EXPECT_TRUE(b.pn.empty() && b.px.empty() && b.ux.empty() && b.h.empty() && b.state.empty());
+      EXPECT_EQ(b.pn.capacity(), 0U) << "released, not only cleared";
+      expect_same_totals(a, b);
+      EXPECT_EQ(kept.cases[k].solved, released.cases[k].solved);
+    }
+    EXPECT_NE(released.cases[1].solution.totals.fx, 0.0);
   }
-  EXPECT_NE(released.cases[1].solution.totals.fx, 0.0);
 }
 
 TEST(RunFields, WheelRailPatchesReleaseTheirFields) {
