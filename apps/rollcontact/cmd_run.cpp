@@ -95,21 +95,13 @@ batch::RunOptions solver_run_options(const RunSettings& settings) {
   options.solve_unvalidated = settings.unvalidated;
   // The report and JSON hold the fields; the program needs only each case's status after that.
   options.keep_fields = false;
+  options.keep_outcomes = false;
   return options;
-}
-
-/// Cases refused because their wheel/rail features are known to differ from CONTACT's
-/// reference results (solved with a warning under --unvalidated).
-std::size_t refused_as_unvalidated(const batch::RunResult& result) {
-  std::size_t refused = 0;
-  for (const CaseOutcome& c : result.cases)
-    if (!c.solved && c.refused_unvalidated) ++refused;
-  return refused;
 }
 
 /// Says how to get our best answer for such cases anyway.
 void print_unvalidated_hint(const batch::RunResult& result) {
-  if (const std::size_t refused = refused_as_unvalidated(result); refused > 0)
+  if (const std::size_t refused = result.refused_unvalidated; refused > 0)
     fmt::print(stderr,
                "note: {} case(s) refused as not validated against CONTACT; `rollcontact run "
                "--unvalidated` solves them, each with a warning in the report and the JSON\n",
@@ -224,8 +216,8 @@ int run_files_in_parallel(const RunSettings& settings) {
           o.status = r.failed == 0 ? exit_ok : exit_case_failed;
           o.line =
               fmt::format("{}: {} case(s), {} failed; wrote {} and {}", settings.inputs[k],
-                          r.cases.size(), r.failed, r.report_path.string(), r.json_path.string());
-          if (const std::size_t refused = refused_as_unvalidated(r); refused > 0)
+                          r.case_count, r.failed, r.report_path.string(), r.json_path.string());
+          if (const std::size_t refused = r.refused_unvalidated; refused > 0)
             o.line += fmt::format(
                 " ({} refused as not validated against CONTACT: --unvalidated "
                 "solves them with a warning)",

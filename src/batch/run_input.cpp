@@ -282,6 +282,13 @@ void add_output(RunFilesWriter& files, const CaseOutput& o, RunResult& result) {
   result.failed += o.failed;
 }
 
+/// Counts a finished case and keeps its outcome where the options ask for it.
+void keep_outcome(CaseOutcome outcome, const RunOptions& options, RunResult& result) {
+  ++result.case_count;
+  if (!outcome.solved && outcome.refused_unvalidated) ++result.refused_unvalidated;
+  if (options.keep_outcomes) result.cases.push_back(std::move(outcome));
+}
+
 /// The run's files complete and in place.
 void finish_files(RunFilesWriter& files, RunResult& result) {
   files.finish();
@@ -342,6 +349,7 @@ RunResult run_distributed(const std::vector<format::InputCase>& problems,
   }
   RunFilesWriter files(output_stem, input_name);
   for (const CaseOutput& o : outputs) add_output(files, o, result);
+  result.case_count = problems.size();
   finish_files(files, result);
   return result;
 }
@@ -369,7 +377,7 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
       c.output = CaseOutput{};
       result.timing.output += seconds_since(start) + c.output_seconds;
       if (options.on_case) options.on_case(c.outcome, k, problems.size());
-      result.cases.push_back(std::move(c.outcome));
+      keep_outcome(std::move(c.outcome), options, result);
     }
   }
   for (std::size_t k = 0; options.threads <= 1 && k < problems.size(); ++k) {
@@ -381,7 +389,7 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
     result.timing.output += seconds_since(start);
     if (options.on_case) options.on_case(outcome, k, problems.size());
     if (!options.keep_fields) release_fields(outcome);
-    result.cases.push_back(std::move(outcome));
+    keep_outcome(std::move(outcome), options, result);
   }
   start = std::chrono::steady_clock::now();
   finish_files(files, result);

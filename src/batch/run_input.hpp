@@ -61,6 +61,10 @@ struct RunOptions {
   /// fields are released once its outputs are made, so that a run's memory does not grow with
   /// its number of cases (with threads > 1 by the worker, before on_case sees the outcome).
   bool keep_fields = true;
+  /// Keep each case's outcome in RunResult::cases. False (the command-line program, which needs
+  /// only the counts RunResult keeps anyway, and sees each outcome in on_case): `cases` stays
+  /// empty and a run's memory holds no per-case results at all.
+  bool keep_outcomes = true;
 };
 
 /// Where the wall time of a run went [s] (one thread: with threads > 1 set-up and solve are
@@ -73,7 +77,10 @@ struct RunTiming {
 };
 
 struct RunResult {
-  std::vector<CaseOutcome> cases;
+  std::vector<CaseOutcome> cases;  ///< empty with RunOptions::keep_outcomes = false
+  std::size_t case_count = 0;      ///< cases run (read and reported)
+  /// Cases refused as not validated against CONTACT (CaseOutcome::refused_unvalidated).
+  std::size_t refused_unvalidated = 0;
   /// The cases as read, in the order of `cases` (run_input_file only; run_problems leaves it
   /// empty): what callers need beyond the outcomes (e.g. a wheel/rail case's profiles).
   std::vector<format::InputCase> inputs;

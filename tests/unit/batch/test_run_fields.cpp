@@ -117,5 +117,37 @@ TEST(RunFields, WheelRailPatchesReleaseTheirFields) {
   EXPECT_GT(patches, 20U);
 }
 
+TEST(RunFields, WithoutOutcomesTheRunKeepsOnlyItsCounts) {
+  // RunOptions::keep_outcomes = false (the command-line program): the same files, the counts
+  // of cases and of refusals, and no per-case results held; on_case still sees every case.
+  REQUIRE_EXAMPLES();
+  const test_support::ScratchDir scratch("rollcontact_run_fields_outcomes");
+  RunOptions keep;
+  keep.output_dir = scratch / "keep";
+  RunOptions lean = keep;
+  lean.output_dir = scratch / "lean";
+  lean.keep_fields = false;
+  lean.keep_outcomes = false;
+  std::size_t seen = 0;
+  lean.on_case = [&seen](const CaseOutcome&, std::size_t k, std::size_t) { seen = k + 1; };
+  // wheelflat: every case refused (wheel slices are not validated); mbench_a22_right: solved.
+  for (const char* name : {"wheelflat.inp", "mbench_a22_right.inp"}) {
+    const RunResult a = run_input_file(test_support::kExamples / name, keep);
+    const RunResult b = run_input_file(test_support::kExamples / name, lean);
+    EXPECT_EQ(file_text(a.report_path), file_text(b.report_path)) << name;
+    EXPECT_EQ(file_text(a.json_path), file_text(b.json_path)) << name;
+    EXPECT_EQ(a.case_count, a.cases.size()) << name;
+    EXPECT_EQ(b.case_count, a.cases.size()) << name;
+    EXPECT_TRUE(b.cases.empty()) << name;
+    EXPECT_EQ(seen, a.cases.size()) << name;
+    std::size_t refused = 0;
+    for (const CaseOutcome& c : a.cases) refused += !c.solved && c.refused_unvalidated ? 1 : 0;
+    EXPECT_EQ(refused, std::string(name) == "wheelflat.inp" ? a.cases.size() : 0U) << name;
+    EXPECT_EQ(a.refused_unvalidated, refused) << name;
+    EXPECT_EQ(b.refused_unvalidated, refused) << name;
+    EXPECT_EQ(b.failed, a.failed) << name;
+  }
+}
+
 }  // namespace
 }  // namespace rollcontact::batch
