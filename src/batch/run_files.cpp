@@ -1,5 +1,6 @@
 #include "batch/run_files.hpp"
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "format/report/json_writer.hpp"
@@ -42,9 +43,9 @@ RunFilesWriter::RunFilesWriter(const std::filesystem::path& output_stem,
 
 void RunFilesWriter::add(const CaseOutput& output) {
   report_.append(output.report);
-  if (output.json.is_null()) return;
+  if (output.json.empty()) return;
   // dump(2) of the case alone, every line indented to its depth in the document.
-  const std::string text = output.json.dump(2);
+  const std::string& text = output.json;
   std::string indented;
   indented.reserve(text.size() + text.size() / 8);
   indented += first_case_ ? "\n" : ",\n";

@@ -4,8 +4,6 @@
 // only when the run completes.
 
 #include <filesystem>
-#include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
 
 #include "format/text/atomic_file.hpp"
@@ -15,8 +13,11 @@ namespace rollcontact::batch {
 /// What one case adds to the run's files.
 struct CaseOutput {
   std::string report;
-  nlohmann::json json;  ///< null: nothing for the results (R = 2, 3 cases)
-  int failed = 0;       ///< 1: an error or not converged
+  /// The case's entry of the results, as nlohmann::json::dump(2) writes it (text: a tenth of
+  /// the memory of the JSON object while a run with threads holds its cases' outputs); empty:
+  /// nothing for the results (R = 2, 3 cases).
+  std::string json;
+  int failed = 0;  ///< 1: an error or not converged
 };
 
 /// <stem>.out and <stem>.json of one run. The JSON is byte for byte

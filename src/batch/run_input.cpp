@@ -192,15 +192,15 @@ CaseOutput render_case(const format::InputCase& input, const CaseOutcome& outcom
     format::write_wheelrail_case_report(report, *m1, outcome.problem, outcome.wheelrail);
     if (m1->digits.a >= 1)
       format::write_wheelrail_mat_files(output_stem, *m1, outcome.problem, outcome.wheelrail);
-    out.json = format::wheelrail_case_to_json(outcome.problem, outcome.wheelrail);
+    out.json = format::wheelrail_case_to_json(outcome.problem, outcome.wheelrail).dump(2);
   } else if (outcome.solved) {
     format::write_case_report(report, *m3, outcome.solution);
     format::write_subs_file(output_stem, *m3, outcome.solution);
     if (m3->digits.a >= 1) format::write_mat_file(output_stem, *m3, outcome.solution);
-    out.json = format::case_to_json(*m3, outcome.solution);
+    out.json = format::case_to_json(*m3, outcome.solution).dump(2);
   } else if (!outcome.skipped) {
     format::write_case_error(report, outcome.problem, outcome.error);
-    out.json = format::case_error_to_json(outcome.problem, outcome.error);
+    out.json = format::case_error_to_json(outcome.problem, outcome.error).dump(2);
   }
   out.report = report.str();
   return out;
@@ -329,7 +329,7 @@ RunResult run_distributed(const std::vector<format::InputCase>& problems,
       append_field(out, std::to_string(k));
       append_field(out, std::to_string(o.failed));
       append_field(out, o.report);
-      append_field(out, o.json.is_null() ? std::string() : o.json.dump());
+      append_field(out, o.json);
     }
     return out;
   });
@@ -343,8 +343,7 @@ RunResult run_distributed(const std::vector<format::InputCase>& problems,
       CaseOutput& o = outputs.at(k);
       o.failed = std::stoi(take_field(blob, pos));
       o.report = take_field(blob, pos);
-      const std::string json = take_field(blob, pos);
-      if (!json.empty()) o.json = nlohmann::json::parse(json);
+      o.json = take_field(blob, pos);
     }
   }
   RunFilesWriter files(output_stem, input_name);

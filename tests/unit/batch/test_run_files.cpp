@@ -21,19 +21,21 @@ namespace fs = std::filesystem;
 std::vector<CaseOutput> sample_cases() {
   std::vector<CaseOutput> cases(4);
   cases[0].report = "\n Case     1\n";
-  cases[0].json = {{"case", 1},
-                   {"force_tr", {-16.68, 37.77, 10000.0}},
-                   {"patches", {{{"fn", 9996.9}, {"grid", {{"mx", 24}, {"my", 40}}}}}},
-                   {"message", ""}};
+  cases[0].json = nlohmann::json{
+      {"case", 1},
+      {"force_tr", {-16.68, 37.77, 10000.0}},
+      {"patches", {{{"fn", 9996.9}, {"grid", {{"mx", 24}, {"my", 40}}}}}},
+      {"message", ""}}.dump(2);
   cases[1].report = " (R = 3: read, not solved)\n";  // no results entry
   cases[2].report = "\n Case     3\n error\n";
-  cases[2].json = {{"case", 3},
-                   {"status", "error"},
-                   {"message", "line 1\n\"quoted\" — ä"},
-                   {"patches", nlohmann::json::array()},
-                   {"extra", nlohmann::json::object()}};
+  cases[2].json = nlohmann::json{{"case", 3},
+                                 {"status", "error"},
+                                 {"message", "line 1\n\"quoted\" — ä"},
+                                 {"patches", nlohmann::json::array()},
+                                 {"extra", nlohmann::json::object()}}
+                      .dump(2);
   cases[2].failed = 1;
-  cases[3].json = {{"case", 4}, {"values", {1e-300, -0.0, 3}}};
+  cases[3].json = nlohmann::json{{"case", 4}, {"values", {1e-300, -0.0, 3}}}.dump(2);
   return cases;
 }
 
@@ -48,7 +50,7 @@ std::string expected_report(const std::vector<CaseOutput>& cases) {
 std::string expected_json(const std::vector<CaseOutput>& cases, const std::string& name) {
   nlohmann::json all = nlohmann::json::array();
   for (const CaseOutput& c : cases)
-    if (!c.json.is_null()) all.push_back(c.json);
+    if (!c.json.empty()) all.push_back(nlohmann::json::parse(c.json));
   return format::results_document(name, std::move(all)).dump(2) + "\n";
 }
 
