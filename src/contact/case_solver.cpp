@@ -55,6 +55,7 @@ ReportedSlip reported_slip(const tangential::TangentialResult& t, const Field& p
   }
   return r;
 }
+
 const Solution* CaseSolver::map_sequence(model::TangentialKind kind) {
   const Solution* prev =
       problem_.sequence.continue_previous && st_.previous && !st_.previous->pn.empty()
@@ -70,15 +71,24 @@ const Solution* CaseSolver::map_sequence(model::TangentialKind kind) {
     prev_ = PreviousFields{};
     return prev;
   }
+  // What this case reads beside the pressures: tractions as a start or the previous step,
+  // displacements of the previous step (transient Fastsim, shifts), slips for the slip speed of
+  // velocity-dependent friction.
+  FieldsToMap what;
+  what.tractions = kind != model::TangentialKind::None;
+  what.displacements =
+      kind == model::TangentialKind::TransientRolling || kind == model::TangentialKind::Shift;
+  what.slips = what.tractions && friction_->velocity_dependent();
   prev_ = map_previous(prev, grid_, problem_.sequence.origin_x_mm - st_.previous_origin_x,
-                       problem_.sequence.origin_y_mm - st_.previous_origin_y);
+                       problem_.sequence.origin_y_mm - st_.previous_origin_y, what);
   // Steady rolling remembers the previous solution only as a start (transient rolling and
   // shifts as the previous time step, which must stay what it was).
   if (problem_.sequence.new_step && prev != nullptr && st_.earlier &&
       kind == model::TangentialKind::SteadyRolling)
-    extrapolate_start(prev_, map_previous(&*st_.earlier, grid_,
-                                          problem_.sequence.origin_x_mm - st_.earlier_origin_x,
-                                          problem_.sequence.origin_y_mm - st_.earlier_origin_y));
+    extrapolate_start(
+        prev_,
+        map_previous(&*st_.earlier, grid_, problem_.sequence.origin_x_mm - st_.earlier_origin_x,
+                     problem_.sequence.origin_y_mm - st_.earlier_origin_y, what));
   // A new step starts from the extrapolated previous steps; the iterates of a step from the
   // last of them, full solve or normal estimate.
   if (problem_.sequence.normal_from_previous && prev != nullptr && !problem_.sequence.new_step &&

@@ -18,18 +18,24 @@ std::optional<ElementOffset> element_offset(const Grid& old, const Grid& grid, d
 
 /// `shift_x`, `shift_y` [mm]: how far this grid's coordinate origin lies from the previous one's
 /// in the sequence's common frame (model::SequenceLink::origin_*).
-PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift_x,
-                            double shift_y) {
+PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift_x, double shift_y,
+                            FieldsToMap what) {
   PreviousFields out;
   const std::size_t n = grid.size();
-  out.px.assign(n, 0.0);
-  out.py.assign(n, 0.0);
   out.pn.assign(n, 0.0);
-  out.ux.assign(n, 0.0);
-  out.uy.assign(n, 0.0);
-  out.sx.assign(n, 0.0);
-  out.sy.assign(n, 0.0);
   out.covered.assign(n, 0);
+  if (what.tractions) {
+    out.px.assign(n, 0.0);
+    out.py.assign(n, 0.0);
+  }
+  if (what.displacements) {
+    out.ux.assign(n, 0.0);
+    out.uy.assign(n, 0.0);
+  }
+  if (what.slips) {
+    out.sx.assign(n, 0.0);
+    out.sy.assign(n, 0.0);
+  }
   if (prev == nullptr || prev->pn.empty()) return out;
   out.veloc = prev->kinematics.veloc;
   const bool has_mu = prev->mu.size() == prev->grid.size();
@@ -45,14 +51,16 @@ PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift
   if (!offset) return out;
   for_each_overlap(old, grid, *offset, [&](std::size_t i, std::size_t j) {
     out.covered[i] = 1;
-    out.px[i] = prev->px[j];
-    out.py[i] = prev->py[j];
     out.pn[i] = prev->pn[j];
-    if (prev->ux.size() == old.size()) {
+    if (what.tractions) {
+      out.px[i] = prev->px[j];
+      out.py[i] = prev->py[j];
+    }
+    if (what.displacements && prev->ux.size() == old.size()) {
       out.ux[i] = prev->ux[j];
       out.uy[i] = prev->uy[j];
     }
-    if (prev->sx.size() == old.size()) {
+    if (what.slips && prev->sx.size() == old.size()) {
       out.sx[i] = prev->sx[j];
       out.sy[i] = prev->sy[j];
     }

@@ -50,9 +50,19 @@ struct PreviousFields {
   double veloc = 1.0;               ///< rolling velocity [mm/s] of the previous case
 };
 
+/// Which of the previous case's fields beside the pressures a case reads; those not asked for
+/// stay empty (a vertical-force iteration's normal-only estimates read the pressures alone, and
+/// mapping eight fields for each of them cost 2 % of a force sweep's instructions).
+struct FieldsToMap {
+  bool tractions = true;      ///< px, py
+  bool displacements = true;  ///< ux, uy
+  bool slips = true;          ///< sx, sy
+};
+
 /// `shift_x`, `shift_y` [mm]: how far this grid's coordinate origin lies from the previous one's
 /// in the sequence's common frame (model::SequenceLink::origin_*).
-PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift_x, double shift_y);
+PreviousFields map_previous(const Solution* prev, const Grid& grid, double shift_x, double shift_y,
+                            FieldsToMap what = {});
 
 /// `f` on grid `old` mapped onto `grid` as map_previous() does; 0 where `old` does not reach.
 Field map_field(const Field& f, const Grid& old, const Grid& grid, double shift_x, double shift_y);
