@@ -119,8 +119,13 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
                  distribution->size(), settings.threads > 1 ? "; --threads ignored" : "");
   }
   const bool quiet = settings.quiet;
-  options.on_case = [quiet, show_picture](const CaseOutcome& c, std::size_t k, std::size_t count) {
+  // With threads the cases come while the progress line is shown: clear it first.
+  const bool progress_line =
+      !quiet && !distributed && settings.threads > 1 && isatty(fileno(stderr));
+  options.on_case = [quiet, show_picture, progress_line](const CaseOutcome& c, std::size_t k,
+                                                         std::size_t count) {
     if (quiet) return;
+    if (progress_line) fmt::print(stderr, "\r{:72}\r", "");
     print_case_summary(c);
     if (show_picture && c.solved && !c.wheel_rail) {
       std::ostringstream pic;
@@ -130,7 +135,7 @@ int run_job(const std::filesystem::path& input, const RunSettings& settings, boo
     if (count > 20 && (k + 1) % 20 == 0) fmt::print(stderr, "  ... {}/{} cases\n", k + 1, count);
   };
   options.threads = settings.threads;
-  if (!quiet && !distributed && isatty(fileno(stderr))) {
+  if (progress_line) {
     // A progress line on a terminal while the threads work (not in pipes or with -q).
     const auto start = std::chrono::steady_clock::now();
     options.on_progress = [start](std::size_t done, std::size_t count) {

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <variant>
 
+#include "batch/in_order.hpp"
 #include "batch/parallel.hpp"
 #include "batch/run_files.hpp"
 #include "format/inp/inp_reader.hpp"
@@ -228,54 +229,6 @@ void release_fields(CaseOutcome& outcome) {
   for (WheelRailPatch& patch : outcome.wheelrail.patches) release_fields(patch.solution);
 }
 
-/// A case solved on a worker, with what it contributes to the run's files.
-struct SolvedCase {
-  CaseOutcome outcome;
-  CaseOutput output;
-  double output_seconds = 0.0;  ///< making `output` (and the case's side files)
-};
-
-/// The cases solved on `threads` workers: each sequence (module and result element) in its
-/// order on one worker, the sequences in parallel. The solvers are made before the workers
-/// start, so that each worker only touches its own. Each worker also makes its cases' outputs
-/// and, without keep_fields, releases their fields at once: the run then holds the cases'
-/// outputs until they are written in order, not their fields.
-std::vector<SolvedCase> solve_in_parallel(const std::vector<format::InputCase>& problems,
-                                          RunState& state, const RunOptions& options,
-                                          const std::filesystem::path& output_stem) {
-  for (const format::InputCase& c : problems) {
-    if (const auto* m3 = std::get_if<format::CaseRecord>(&c))
-      state.patch_solvers.try_emplace(m3->result_element, options.solve);
-    else
-      state.wheelset_solvers.try_emplace(std::get<format::WheelRailRecord>(c).result_element,
-                                         options.solve);
-  }
-  const std::vector<std::vector<std::size_t>> groups = sequence_groups(problems);
-  std::vector<SolvedCase> solved(problems.size());
-  std::atomic<std::size_t> done{0};
-  ParallelOptions parallel;
-  parallel.threads = options.threads;
-  parallel.schedule = Schedule::Dynamic;
-  std::function<void(std::size_t)> progress;
-  if (options.on_progress)
-    progress = [&](std::size_t) { options.on_progress(done.load(), problems.size()); };
-  parallel_for(
-      groups.size(), parallel,
-      [&](std::size_t, std::size_t g) {
-        for (const std::size_t k : groups[g]) {
-          SolvedCase& c = solved[k];
-          c.outcome = solve_one(problems[k], state);
-          const auto start = std::chrono::steady_clock::now();
-          c.output = render_case(problems[k], c.outcome, output_stem);
-          c.output_seconds = seconds_since(start);
-          if (!options.keep_fields) release_fields(c.outcome);
-          ++done;
-        }
-      },
-      progress);
-  return solved;
-}
-
 /// The next case's outputs into the run's files.
 void add_output(RunFilesWriter& files, const CaseOutput& o, RunResult& result) {
   files.add(o);
@@ -287,6 +240,68 @@ void keep_outcome(CaseOutcome outcome, const RunOptions& options, RunResult& res
   ++result.case_count;
   if (!outcome.solved && outcome.refused_unvalidated) ++result.refused_unvalidated;
   if (options.keep_outcomes) result.cases.push_back(std::move(outcome));
+}
+
+/// A case solved on a worker, with its outputs, waiting for the cases before it.
+struct SolvedCase {
+  CaseOutcome outcome;
+  CaseOutput output;
+  double output_seconds = 0.0;  ///< making `output` (and the case's side files)
+};
+
+/// The cases solved on `threads` workers: each sequence (module and result element) in its
+/// order on one worker, the sequences in parallel. The solvers are made before the workers
+/// start, so that each worker only touches its own. Each worker makes its cases' outputs and,
+/// without keep_fields, releases their fields; a finished case then goes to the run's files,
+/// on_case and `result` in case order as soon as every case before it has (InOrder), so that
+/// the run holds only the cases waiting for an earlier one, not all of them until the end.
+void run_in_parallel(const std::vector<format::InputCase>& problems, RunState& state,
+                     const RunOptions& options, const std::filesystem::path& output_stem,
+                     RunFilesWriter& files, RunResult& result) {
+  for (const format::InputCase& c : problems) {
+    if (const auto* m3 = std::get_if<format::CaseRecord>(&c))
+      state.patch_solvers.try_emplace(m3->result_element, options.solve);
+    else
+      state.wheelset_solvers.try_emplace(std::get<format::WheelRailRecord>(c).result_element,
+                                         options.solve);
+  }
+  InOrder<SolvedCase> in_order([&](std::size_t k, SolvedCase& c) {
+    const auto start = std::chrono::steady_clock::now();
+    add_case_time(c.outcome, 0.0, result.timing);  // the set-up out of the workers' wall time
+    add_output(files, c.output, result);
+    c.output = CaseOutput{};
+    if (options.on_case) options.on_case(c.outcome, k, problems.size());
+    keep_outcome(std::move(c.outcome), options, result);
+    result.timing.output += c.output_seconds + seconds_since(start);
+  });
+  const std::vector<std::vector<std::size_t>> groups = sequence_groups(problems);
+  std::atomic<std::size_t> done{0};
+  ParallelOptions parallel;
+  parallel.threads = options.threads;
+  parallel.schedule = Schedule::Dynamic;
+  std::function<void(std::size_t)> progress;
+  if (options.on_progress)
+    progress = [&](std::size_t) { options.on_progress(done.load(), problems.size()); };
+  const auto start = std::chrono::steady_clock::now();
+  parallel_for(
+      groups.size(), parallel,
+      [&](std::size_t, std::size_t g) {
+        for (const std::size_t k : groups[g]) {
+          SolvedCase c;
+          c.outcome = solve_one(problems[k], state);
+          const auto rendered = std::chrono::steady_clock::now();
+          c.output = render_case(problems[k], c.outcome, output_stem);
+          if (!options.keep_fields) release_fields(c.outcome);
+          c.output_seconds = seconds_since(rendered);
+          in_order.add(k, std::move(c));
+          ++done;
+        }
+      },
+      progress);
+  if (in_order.handed_on() != problems.size())
+    throw Error("internal: a threaded run left cases unwritten");
+  // The workers' wall time (what they spent on outputs is in `output` as well).
+  result.timing.solve += seconds_since(start);
 }
 
 /// The run's files complete and in place.
@@ -364,33 +379,22 @@ RunResult run_problems(const std::vector<format::InputCase>& problems,
   RunState state{options, {}, {}};
   // Each case's report and results go to the files as it finishes (RunFilesWriter).
   RunFilesWriter files(output_stem, input_name);
-  auto start = std::chrono::steady_clock::now();
   if (options.threads > 1) {
-    std::vector<SolvedCase> solved = solve_in_parallel(problems, state, options, output_stem);
-    for (const SolvedCase& c : solved) add_case_time(c.outcome, 0.0, result.timing);
-    result.timing.solve += seconds_since(start);
-    for (std::size_t k = 0; k < solved.size(); ++k) {
-      SolvedCase& c = solved[k];
+    run_in_parallel(problems, state, options, output_stem, files, result);
+  } else {
+    for (std::size_t k = 0; k < problems.size(); ++k) {
+      auto start = std::chrono::steady_clock::now();
+      CaseOutcome outcome = solve_one(problems[k], state);
+      add_case_time(outcome, seconds_since(start), result.timing);
       start = std::chrono::steady_clock::now();
-      add_output(files, c.output, result);
-      c.output = CaseOutput{};
-      result.timing.output += seconds_since(start) + c.output_seconds;
-      if (options.on_case) options.on_case(c.outcome, k, problems.size());
-      keep_outcome(std::move(c.outcome), options, result);
+      add_output(files, render_case(problems[k], outcome, output_stem), result);
+      result.timing.output += seconds_since(start);
+      if (options.on_case) options.on_case(outcome, k, problems.size());
+      if (!options.keep_fields) release_fields(outcome);
+      keep_outcome(std::move(outcome), options, result);
     }
   }
-  for (std::size_t k = 0; options.threads <= 1 && k < problems.size(); ++k) {
-    start = std::chrono::steady_clock::now();
-    CaseOutcome outcome = solve_one(problems[k], state);
-    add_case_time(outcome, seconds_since(start), result.timing);
-    start = std::chrono::steady_clock::now();
-    add_output(files, render_case(problems[k], outcome, output_stem), result);
-    result.timing.output += seconds_since(start);
-    if (options.on_case) options.on_case(outcome, k, problems.size());
-    if (!options.keep_fields) release_fields(outcome);
-    keep_outcome(std::move(outcome), options, result);
-  }
-  start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   finish_files(files, result);
   result.timing.output += seconds_since(start);
   return result;

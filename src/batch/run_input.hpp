@@ -39,7 +39,8 @@ struct RunOptions {
   std::filesystem::path output_dir;  ///< empty: next to the input
   SolveOptions solve;
   /// Called after each case (progress); may be empty. With threads > 1 it is called in case
-  /// order once the cases are solved.
+  /// order as soon as a case and every case before it are solved, one call at a time, on the
+  /// worker thread whose case completed the order.
   std::function<void(const CaseOutcome&, std::size_t index, std::size_t count)> on_case;
   /// Worker threads: the sequences (one per result element and module) run in parallel, each
   /// in its order; reports and results are those of a one-thread run, value for value.
