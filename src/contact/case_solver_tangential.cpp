@@ -33,6 +33,24 @@ constexpr double max_contact_box_fraction = 0.75;
 }  // namespace
 
 tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ceta, double cphi) {
+  const std::size_t n = grid_.size();
+  if (std::none_of(sol_.pn.begin(), sol_.pn.end(), [](double p) { return p > 0.0; })) {
+    // An empty contact area carries no tangential tractions (physics.md §9.1), as with the
+    // exact solvers: Fastsim's flexibilities would need a patch. It happens to KPEC and ANALYN
+    // iterates of the vertical-force iteration at first contact, where the interpenetration is
+    // too small for any element's centre to carry pressure.
+    tangential::TangentialResult empty;
+    empty.px.assign(n, 0.0);
+    empty.py.assign(n, 0.0);
+    empty.sx.assign(n, 0.0);
+    empty.sy.assign(n, 0.0);
+    empty.state.assign(n, ElementState::Exterior);
+    empty.converged = true;
+    simplified_ux_.assign(n, 0.0);
+    simplified_uy_.assign(n, 0.0);
+    mu_.clear();
+    return empty;
+  }
   const model::TangentialKind kind = problem_.tangential.kind;
   simplified::SimplifiedCase c;
   c.grid = grid_;
