@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
+#include <string>
 
 namespace rollcontact::wheelrail {
 
@@ -108,6 +110,16 @@ void end_on_narrow_bracket(const VerticalForceSettings& st, double f_tol, const 
   res.message = fmt::format("stopped on |dz| < EPS with FZ - target = {:.4g} N", residual);
 }
 
+/// "δ = …°, F_s/F_n = …" of a sample's most loaded patch, for messages.
+std::string main_patch_text(const HeightSample& s) {
+  const auto most = std::max_element(
+      s.patches.begin(), s.patches.end(),
+      [](const PatchForceSample& x, const PatchForceSample& y) { return x.fn_N < y.fn_N; });
+  if (most == s.patches.end() || !(most->fn_N > 0.0)) return "no loaded patch";
+  return fmt::format("contact angle {:.1f} degrees, F_s/F_n = {:.3g}",
+                     most->delta_rad * 180.0 / std::numbers::pi, most->fs_N / most->fn_N);
+}
+
 /// F_z of a sample's planar patches from their normal forces: Σ F_n (cos δ + r sin δ).
 double planar_fz(const HeightSample& s, const std::vector<double>& ratio) {
   double fz = 0.0;
@@ -196,6 +208,7 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   // |F_z + k·z − target| of the iterate before the last one [N] (infinite until there is one).
   double older_abs_residual = std::numeric_limits<double>::infinity();
   const double f_tol = force_tolerance(st);
+  HeightSample last_sample;  // the last iterate's forces, for the message
   if (known != nullptr && std::isfinite(known->fz_N) && known->z_mm > start_mm) {
     const double residual = known->fz_N + k * known->z_mm - st.target_N;
     (residual < 0.0 ? lo : hi) = known->z_mm;
@@ -206,6 +219,7 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   }
   for (int it = 1; it <= std::max(st.max_iterations, 1); ++it) {
     const HeightSample s = solve_at(z);
+    last_sample = s;
     const PowerLaw model(s, k);
     double model_f = 0.0, slope = 0.0;
     if (model.usable()) model.eval(z, model_f, slope);
@@ -250,7 +264,15 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
       res.message = fmt::format("stopped on |dz| < EPS with FZ - target = {:.4g} N", residual);
       return res;
     }
-    double next = model.usable() ? model.solve(st.target_N, z) : 2.0 * z - lo + 1e-3;
+    // F_z falling as the wheelset is lowered (the model's slope ≤ 0: the patches' normal and
+    // friction forces pull the wheelset down, F_n cos δ + F_s sin δ < 0, e.g. a steep flange
+    // whose friction acts downwards): the model has no answer, and the ratio F_s/F_n falls as
+    // the load grows, so F_z may still turn. The approach is doubled (the model's fall-back took
+    // steps of 1e-3 mm: MAXNR of them in a random case with 72 mrad yaw on the flange).
+    const bool falling = !bracketed && model.usable() && !(slope > 0.0);
+    double next = falling          ? 2.0 * z - start_mm + 1e-3
+                  : model.usable() ? model.solve(st.target_N, z)
+                                   : 2.0 * z - lo + 1e-3;
     // Near the target the secant through the last two iterates: the power-law model's slope
     // is that of Hertzian patches turned by their contact angles, and where the patches are not
     // (flange contacts, conformal ones) its Newton steps converge only linearly, each leaving
@@ -299,6 +321,11 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   }
   res.message = fmt::format("the vertical force did not converge in MAXNR = {} iterations",
                             st.max_iterations);
+  if (last_residual + st.target_N - k * last_z < 0.0 && st.target_N > 0.0)
+    res.message += fmt::format(
+        "; F_z stayed negative ({:.6g} N at z_ws = {:.7g} mm, {}): the contact's normal and "
+        "friction forces pull the wheelset down",
+        last_residual + st.target_N - k * last_z, last_z, main_patch_text(last_sample));
   return res;
 }
 

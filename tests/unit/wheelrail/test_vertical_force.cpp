@@ -323,5 +323,42 @@ TEST(VerticalForce, OneSidedConvergenceIsNotBrokenOff) {
     }
 }
 
+// A steep flange whose friction acts downwards: F_z = F_n (cos δ + r sin δ) with δ = −64° and
+// r = F_s/F_n saturated at μ = 0.56 for small loads, so F_z is negative and falls as the wheelset
+// is lowered, until r drops with the load (F_s saturates less) and F_z turns. The iteration
+// doubles the approach while F_z falls (it took steps of 1e-3 mm before and ended on MAXNR) and
+// meets the target beyond the turn; where F_z never turns it says why it did not converge.
+HeightSample downward_flange(double z, double turn_load_N) {
+  constexpr double delta = -64.0 * 3.14159265358979 / 180.0, mu = 0.56, c = 2.0e7, z0 = 0.0;
+  HeightSample h;
+  h.z_mm = z;
+  const double pen = std::max(0.0, (z - z0) * std::cos(delta));
+  const double fn = c * std::pow(pen, 1.5);
+  const double r = fn > 0.0 ? mu * std::min(1.0, turn_load_N / fn) : mu;
+  h.fz_N = fn * (std::cos(delta) + r * std::sin(delta));
+  h.patches.push_back({pen, delta, fn, r * fn});
+  return h;
+}
+
+TEST(VerticalForce, FallingForceDoublesTheApproachUntilItTurns) {
+  VerticalForceSettings st;
+  st.target_N = 1.0e4;
+  const double turn = 2.0e5;  // F_n beyond which F_s/F_n falls below μ
+  int solves = 0;
+  const VerticalForceResult r = solve_vertical_force(st, 0.0, 1e-3, [&](double z) {
+    ++solves;
+    return downward_flange(z, turn);
+  });
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_NEAR(downward_flange(r.z_mm, turn).fz_N, st.target_N, 1e-5 * st.target_N);
+  EXPECT_LE(solves, st.max_iterations);
+  // Never turning (r = μ at every load): not converged, and the message says why.
+  const VerticalForceResult never =
+      solve_vertical_force(st, 0.0, 1e-3, [&](double z) { return downward_flange(z, 1e300); });
+  EXPECT_FALSE(never.converged);
+  EXPECT_NE(never.message.find("F_z stayed negative"), std::string::npos) << never.message;
+  EXPECT_NE(never.message.find("contact angle -64.0 degrees"), std::string::npos) << never.message;
+}
+
 }  // namespace
 }  // namespace rollcontact::wheelrail
