@@ -74,10 +74,35 @@ double jump_tolerance(const VerticalForceSettings& st, double f_tol) {
   return std::max(1e-2 * scale, f_tol);
 }
 
-/// A bracket [lo, hi] of z_ws [mm] with F_z + k·z − target [N] at its ends.
+/// A bracket [lo, hi] of z_ws [mm] with F_z + k·z − target [N] at its ends, and the elements in
+/// contact at its upper end (−1: not known).
 struct BracketEnds {
   double lo, hi, f_lo, f_hi;
+  int contact_elements_hi = -1;
 };
+
+/// Elements in contact over a sample's patches (−1 where a patch does not say).
+int contact_elements(const HeightSample& s) {
+  int n = 0;
+  for (const PatchForceSample& p : s.patches) {
+    if (p.contact_elements < 0) return -1;
+    n += p.contact_elements;
+  }
+  return n;
+}
+
+/// Why F_z may jump between two heights, for the message: a patch of a few elements (the grid
+/// is coarse for the load: the first elements to come into contact carry a finite force) or a
+/// change of the approximate pressures' shape.
+std::string jump_cause(int contact_elements_hi) {
+  constexpr int few = 12;
+  if (contact_elements_hi >= 0 && contact_elements_hi <= few)
+    return fmt::format(
+        "only {} element(s) are in contact above the jump: the grid (DX, DS) is too coarse for "
+        "this load, refine it",
+        contact_elements_hi);
+  return "the contact changes abruptly there, e.g. a second region joins a KPEC or ANALYN patch";
+}
 
 /// The end of an iteration whose bracket is narrower than EPS, the last iterate's residual
 /// `residual`: converged where F_z meets the target within jump_tolerance — on the nearer side,
@@ -98,9 +123,9 @@ void end_on_narrow_bracket(const VerticalForceSettings& st, double f_tol, const 
     // A jump of F_z larger than the target allows: no height gives FZ.
     res.message = fmt::format(
         "no z_ws gives FZ = {:.6g} N: the vertical force jumps from {:.6g} to {:.6g} N between "
-        "z_ws = {:.7g} and {:.7g} mm (the contact changes abruptly there, e.g. a second region "
-        "joins a KPEC or ANALYN patch)",
-        st.target_N, b.f_lo + st.target_N - k * b.lo, b.f_hi + st.target_N - k * b.hi, b.lo, b.hi);
+        "z_ws = {:.7g} and {:.7g} mm ({})",
+        st.target_N, b.f_lo + st.target_N - k * b.lo, b.f_hi + st.target_N - k * b.hi, b.lo, b.hi,
+        jump_cause(b.contact_elements_hi));
     res.jump_lo_mm = b.lo;
     res.jump_hi_mm = b.hi;
     return;
@@ -209,10 +234,12 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
   double older_abs_residual = std::numeric_limits<double>::infinity();
   const double f_tol = force_tolerance(st);
   HeightSample last_sample;  // the last iterate's forces, for the message
+  int elements_hi = -1;      // elements in contact at the bracket's upper end
   if (known != nullptr && std::isfinite(known->fz_N) && known->z_mm > start_mm) {
     const double residual = known->fz_N + k * known->z_mm - st.target_N;
     (residual < 0.0 ? lo : hi) = known->z_mm;
     (residual < 0.0 ? f_lo : f_hi) = residual;
+    if (residual >= 0.0) elements_hi = contact_elements(*known);
     have_last = true;
     last_z = known->z_mm;
     last_residual = residual;
@@ -242,6 +269,7 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
       hi = z;
       f_hi = residual;
       slope_hi = slope;
+      elements_hi = contact_elements(s);
     }
     const bool bracketed = std::isfinite(hi);
     // The z tolerance applies to the bracket once there is one, not to the last step: a steep
@@ -256,7 +284,7 @@ VerticalForceResult solve_vertical_force(const VerticalForceSettings& st, double
           res.trace.push_back({it + 1, zz, h.fz_N, zz == lo ? slope_lo : slope_hi});
           return h.fz_N + k * zz - st.target_N;
         };
-        end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi}, residual, again, res);
+        end_on_narrow_bracket(st, f_tol, {lo, hi, f_lo, f_hi, elements_hi}, residual, again, res);
         return res;
       }
       // Steps below EPS without a bracket: an answer only if F_z is near the target.
@@ -431,12 +459,13 @@ bool SplitIteration::decided_at_jump(const VerticalForceResult& estimate) {
   const double f_lo = residual(lo);
   full(hi);
   const double f_hi = residual(hi);
+  const int elements_hi = contact_elements(s_);
   if (!(f_lo < 0.0 && f_hi >= 0.0)) return false;
   const auto again = [&](double z) {
     full(z);
     return residual(z);
   };
-  end_on_narrow_bracket(st_, f_tol_, {lo, hi, f_lo, f_hi}, f_hi, again, res_);
+  end_on_narrow_bracket(st_, f_tol_, {lo, hi, f_lo, f_hi, elements_hi}, f_hi, again, res_);
   return true;
 }
 

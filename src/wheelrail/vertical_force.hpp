@@ -19,6 +19,7 @@ struct PatchForceSample {
   double pen_mm = 0.0;     ///< approach of the patch
   double delta_rad = 0.0;  ///< contact angle
   double fn_N = 0.0, fs_N = 0.0;
+  int contact_elements = -1;  ///< elements in contact (−1: not known)
 };
 
 struct HeightSample {

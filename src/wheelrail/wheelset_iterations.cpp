@@ -119,7 +119,8 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
     tangential_share.clear();
     for (const WheelRailPatch& w : result.patches) {
       const wheelrail::PlanarForces f = wheelrail::planar_forces(w);
-      h.patches.push_back({w.solution.totals.pen, w.contact_angle_rad, f.fn, f.fs});
+      h.patches.push_back(
+          {w.solution.totals.pen, w.contact_angle_rad, f.fn, f.fs, w.solution.statistics.ncon});
       double share = std::numeric_limits<double>::quiet_NaN();
       if (w.conformal.active) {
         const wheelrail::PlanarForces n = wheelrail::pressure_part(w);
@@ -147,7 +148,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
         h.fz_N += w.force_tr.z + share * fn;
       else
         h.fz_N += fn * std::cos(delta) + fs * std::sin(delta);
-      h.patches.push_back({w.solution.totals.pen, delta, fn, fs});
+      h.patches.push_back({w.solution.totals.pen, delta, fn, fs, w.solution.statistics.ncon});
     }
     return h;
   };

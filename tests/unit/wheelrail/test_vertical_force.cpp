@@ -224,8 +224,20 @@ TEST(VerticalForce, AJumpOverTheTargetIsNotConvergedAndSaysWhere) {
   });
   EXPECT_FALSE(r.converged);
   EXPECT_NE(r.message.find("jumps"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("second region"), std::string::npos) << r.message;
   EXPECT_NEAR(r.z_mm, 0.2, st.tolerance);
   EXPECT_LE(solves, 25);
+  // A patch of one element above the jump: the grid is too coarse for the load, and the
+  // message says so (random light-load cases on 2–3 mm grids).
+  const VerticalForceResult coarse = solve_vertical_force(st, 0.1, 0.15, [&](double z) {
+    HeightSample h = jumping(z, 6.0e4);
+    h.patches[0].contact_elements = z > 0.2 ? 1 : 0;
+    return h;
+  });
+  EXPECT_FALSE(coarse.converged);
+  EXPECT_NE(coarse.message.find("only 1 element(s) are in contact above the jump"),
+            std::string::npos)
+      << coarse.message;
 }
 
 // The same through the normal estimates: once they end on the jump, one full solve at each of

@@ -1,0 +1,141 @@
+#!/usr/bin/python3
+"""Random wheel/rail cases around the Manchester benchmark (S1002 on UIC60), run one process
+each: a robustness campaign for what no sweep visits.
+
+Each case draws the lateral position (-15..16 mm), yaw (+-80 mrad), roll, cant, vertical load
+(10 N..300 kN, log-uniform) or wheelset height, DX = DS (0.1..3 mm), friction, speed (also
+backwards, fast and nearly standing), the separation/combination distances, and the
+pressures and tangential model (exact, KPEC, ANALYN; exact or Fastsim), planar or conformal
+contact. A case is a *problem* when the process
+
+  * crashes, hangs (timeout) or reports an internal error,
+  * writes no JSON, or
+  * reports "converged" with a non-finite value, with FZ more than 1 % off a prescribed
+    vertical load, or with exit status 1 — or exits 0 with a case that is not converged.
+
+Errors and non-converged cases with their messages are legitimate answers (a patch smaller
+than an element whose force jumps over the target, say) and are listed, not counted.
+
+    /usr/bin/python3 scripts/wheelrail_random_cases.py --exe build/release/bin/rollcontact \\
+        --cases 300 --seed 1 --out /tmp/random_cases
+
+Exit status 0 without problems, 1 otherwise.
+"""
+
+import argparse
+import json
+import math
+import random
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+EXAMPLES = Path(__file__).resolve().parent.parent.parent / "shared" / "reference" / "contact-examples"
+PROFILES = ["MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"]
+
+
+def draw(rng):
+    """One case's parameters."""
+    p = dict(B=rng.choice([0, 0, 0, 5, 6]), N=rng.choice([1, 1, 0]), D=rng.choice([2, 2, 4]),
+             dx=rng.choice([0.1, 0.15, 0.3, 0.5, 1.0, 2.0, 3.0]), mu=rng.uniform(0.05, 0.6),
+             asep=rng.choice(["90d", "1.0", "0.2"]), dsep=rng.choice([8.0, 2.0, 20.0]),
+             dcomb=rng.choice([4.0, 1.0, 10.0]), cant=rng.choice([0.0, rng.uniform(-0.05, 0.1)]),
+             y=rng.uniform(-15, 16), roll=rng.uniform(-0.01, 0.01), yaw=rng.uniform(-0.08, 0.08),
+             vs=rng.choice([2000.0, 2000.0, -2000.0, 30000.0, 1.0]))
+    p["dcomb"] = min(p["dcomb"], p["dsep"])  # the input requires D_SEP >= D_COMB
+    p["M"] = 3 if p["B"] in (5, 6) else rng.choice([0, 0, 3])
+    # N=1: the vertical load [N]; N=0: the wheelset height [mm] (negative: lifted).
+    p["fz"] = (math.exp(rng.uniform(math.log(10.0), math.log(3e5))) if p["N"] == 1
+               else rng.uniform(-0.3, 2.0))
+    p["vpitch"] = -p["vs"] / 460.0 * (1 + rng.uniform(-0.01, 0.01))
+    return p
+
+
+def case_text(p):
+    """The case as a CONTACT .inp (module 1, first case of its run)."""
+    lines = [" 1 MODULE",
+             f" 12{p['B']}3{p['N']}00    C-P-B-T-N-F-S",
+             f" 00{p['D']}2{p['M']}33    V-L-D-C-M-Z-E",
+             " 0000321    H-G-I-A-O-W-R",
+             "    999     100    30    1     1e-5         MAXGS, MAXIN, MAXNR, MAXOUT, EPS",
+             f"  {p['mu']:.3f}   {p['mu']:.3f}                               FSTAT, FKIN",
+             "  0.280   0.280   82000.  82000.             POISS 1,2, GG 1,2"]
+    if p["M"] == 3:
+        lines.append("  1.000   1.000   1.000                      K0_MF, ALFAMF, BETAMF")
+    lines += [f"  {p['dx']}   {p['dx']}   1.000   {p['asep']}   {p['dsep']}   {p['dcomb']}",
+              f"   14.0     0    1435.0   {p['cant']:.5f}",
+              f"  '{PROFILES[0]}'   0     1.0   0.0",
+              "     0.0    0.0   0.000   0.0   0.0   0.000",
+              "  1360.0  -70.0   460.0",
+              f"  '{PROFILES[1]}'   0     1.0   0.0",
+              f"  0.0  {p['y']:.4f}  {p['fz']:.6g} {p['roll']:.6f} {p['yaw']:.6f}  0.0",
+              f" {p['vs']:.1f} 0.0    0.0   0.0        0.0  {p['vpitch']:.8f}"]
+    return "\n".join(lines) + "\n"
+
+
+def judge(p, returncode, stderr, json_path):
+    """(status, problem or None) of one finished run."""
+    if returncode not in (0, 1):
+        return None, f"exit {returncode}: {stderr.strip()[-300:]}"
+    if "internal" in stderr.lower():
+        return None, "internal error: " + stderr.strip()[-300:]
+    if not json_path.exists():
+        return None, "no JSON written"
+    c = json.loads(json_path.read_text())["cases"][0]
+    status = c["status"]
+    if status == "converged":
+        values = list(c["force_tr"]) + [c["z_ws"]]
+        for patch in c["patches"]:
+            values += [patch[k] for k in ("fn", "fx", "fs", "mn", "pen", "pmax")]
+        if not all(math.isfinite(v) for v in values):
+            return status, "converged with a non-finite value"
+        if p["N"] == 1 and abs(c["force_tr"][2] - p["fz"]) > 0.01 * p["fz"]:
+            return status, f"converged with FZ {c['force_tr'][2]:.6g} N for {p['fz']:.6g} N"
+        if returncode != 0:
+            return status, "converged but exit status 1"
+    elif returncode == 0:
+        return status, f"status {status} with exit status 0"
+    return status, None
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--exe", required=True, help="the rollcontact program")
+    ap.add_argument("--cases", type=int, default=300)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--out", type=Path, required=True, help="folder for the inputs and outputs")
+    ap.add_argument("--timeout", type=float, default=120.0, help="per case [s]")
+    args = ap.parse_args()
+    args.out.mkdir(parents=True, exist_ok=True)
+    for name in PROFILES:
+        shutil.copyfile(EXAMPLES / name, args.out / name)
+    rng = random.Random(args.seed)
+    counts, problems = {}, 0
+    for k in range(args.cases):
+        p = draw(rng)
+        inp = args.out / f"case_{args.seed}_{k}.inp"
+        inp.write_text(case_text(p))
+        try:
+            run = subprocess.run([args.exe, "run", str(inp), "-o", str(args.out / "out"), "-q"],
+                                 capture_output=True, text=True, timeout=args.timeout)
+        except subprocess.TimeoutExpired:
+            problems += 1
+            print(f"PROBLEM {inp.name}: no answer within {args.timeout} s  {p}")
+            continue
+        status, problem = judge(p, run.returncode, run.stderr,
+                                args.out / "out" / (inp.stem + ".json"))
+        if status is not None:
+            counts[status] = counts.get(status, 0) + 1
+            if status != "converged" and problem is None:
+                message = json.loads((args.out / "out" / (inp.stem + ".json")).read_text())
+                print(f"  {inp.name} {status}: {message['cases'][0]['message'][:160]}")
+        if problem is not None:
+            problems += 1
+            print(f"PROBLEM {inp.name}: {problem}  {p}")
+    print(f"{args.cases} cases: {counts}; problems: {problems}")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
