@@ -2,11 +2,12 @@
 """Random wheel/rail cases around the Manchester benchmark (S1002 on UIC60), run one process
 each: a robustness campaign for what no sweep visits.
 
-Each case draws the lateral position (-15..16 mm), yaw (+-80 mrad), roll, cant, vertical load
-(10 N..300 kN, log-uniform) or wheelset height, DX = DS (0.1..3 mm), friction, speed (also
-backwards, fast and nearly standing), the separation/combination distances, and the
-pressures and tangential model (exact, KPEC, ANALYN; exact or Fastsim), planar or conformal
-contact. A case is a *problem* when the process
+Each case draws the wheel (left or right), lateral position (-15..16 mm), yaw (+-80 mrad),
+roll, cant, vertical load (10 N..300 kN, log-uniform) or wheelset height, DX = DS (0.1..3 mm),
+friction, speed (also backwards, fast and nearly standing), the separation/combination
+distances, the pressures and tangential model (exact, KPEC, ANALYN; exact or Fastsim), the
+contact approach (planar D=2, conformal D=4, brute-force D=5) and a massless rail (F=3, rail
+stiffnesses 1e3..1e7 N/mm and preloads) or none. A case is a *problem* when the process
 
   * crashes, hangs (timeout) or reports an internal error,
   * writes no JSON, or
@@ -37,7 +38,10 @@ PROFILES = ["MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"]
 
 def draw(rng):
     """One case's parameters."""
-    p = dict(B=rng.choice([0, 0, 0, 5, 6]), N=rng.choice([1, 1, 0]), D=rng.choice([2, 2, 4]),
+    p = dict(B=rng.choice([0, 0, 0, 5, 6]), N=rng.choice([1, 1, 0]), D=rng.choice([2, 2, 4, 5]),
+             C=rng.choice([0, 1]), F=rng.choice([0, 0, 3]),
+             krail=[rng.choice([1e3, 1e5, 1e7]), rng.uniform(-2e4, 2e4),
+                    rng.choice([1e3, 1e5, 1e7]), rng.uniform(-1e5, 0.0)],
              dx=rng.choice([0.1, 0.15, 0.3, 0.5, 1.0, 2.0, 3.0]), mu=rng.uniform(0.05, 0.6),
              asep=rng.choice(["90d", "1.0", "0.2"]), dsep=rng.choice([8.0, 2.0, 20.0]),
              dcomb=rng.choice([4.0, 1.0, 10.0]), cant=rng.choice([0.0, rng.uniform(-0.05, 0.1)]),
@@ -55,7 +59,7 @@ def draw(rng):
 def case_text(p):
     """The case as a CONTACT .inp (module 1, first case of its run)."""
     lines = [" 1 MODULE",
-             f" 12{p['B']}3{p['N']}00    C-P-B-T-N-F-S",
+             f" {p['C']}2{p['B']}3{p['N']}{p['F']}0    C-P-B-T-N-F-S",
              f" 00{p['D']}2{p['M']}33    V-L-D-C-M-Z-E",
              " 0000321    H-G-I-A-O-W-R",
              "    999     100    30    1     1e-5         MAXGS, MAXIN, MAXNR, MAXOUT, EPS",
@@ -66,8 +70,11 @@ def case_text(p):
     lines += [f"  {p['dx']}   {p['dx']}   1.000   {p['asep']}   {p['dsep']}   {p['dcomb']}",
               f"   14.0     0    1435.0   {p['cant']:.5f}",
               f"  '{PROFILES[0]}'   0     1.0   0.0",
-              "     0.0    0.0   0.000   0.0   0.0   0.000",
-              "  1360.0  -70.0   460.0",
+              "     0.0    0.0   0.000   0.0   0.0   0.000"]
+    if p["F"] == 3:
+        lines.append("  {:.6g}  {:.6g}  {:.6g}  {:.6g}      KYRAIL, FYRAIL, KZRAIL, FZRAIL"
+                     .format(*p["krail"]))
+    lines += ["  1360.0  -70.0   460.0",
               f"  '{PROFILES[1]}'   0     1.0   0.0",
               f"  0.0  {p['y']:.4f}  {p['fz']:.6g} {p['roll']:.6f} {p['yaw']:.6f}  0.0",
               f" {p['vs']:.1f} 0.0    0.0   0.0        0.0  {p['vpitch']:.8f}"]

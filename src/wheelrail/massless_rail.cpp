@@ -82,9 +82,17 @@ LateralRailResult solve_lateral_rail(const LateralRailSettings& st,
                  latest);
     if (k == 0) {
       // The spring alone: a contact force that eases as the rail gives way makes this step
-      // overshoot the root, so the second iterate usually brackets it.
-      x = st.stiffness_N_per_mm > 0.0 ? x + latest.r / st.stiffness_N_per_mm
-                                      : x + std::copysign(st.first_step_mm, latest.r);
+      // overshoot the root, so the second iterate usually brackets it. A step longer than
+      // kMaxFirstStepMm is DYSTEP0 instead (wheelrail-advanced.md §2.5: early steps are at most
+      // 3 mm): the contact changes within millimetres, and a residual of 3.5 MN on a 1 kN/mm
+      // rail (a random case) moved the rail by 3.5 m and left a bracket that MAXNR bisections
+      // could not close.
+      constexpr double kMaxFirstStepMm = 3.0;
+      const double spring_step = st.stiffness_N_per_mm > 0.0
+                                     ? latest.r / st.stiffness_N_per_mm
+                                     : std::numeric_limits<double>::infinity();
+      x += std::abs(spring_step) <= kMaxFirstStepMm ? spring_step
+                                                    : std::copysign(st.first_step_mm, latest.r);
       continue;
     }
     // The bracket: a sign change between neighbours in the table; with several (a residual that

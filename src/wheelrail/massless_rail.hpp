@@ -13,7 +13,7 @@ namespace rollcontact::wheelrail {
 
 struct LateralRailSettings {
   double stiffness_N_per_mm = 0.0;  ///< ky: the residual falls at least this fast with δy
-  double first_step_mm = 1.0;       ///< DYSTEP0, used when ky = 0 (no spring to scale by)
+  double first_step_mm = 1.0;       ///< DYSTEP0: the first step when ky = 0 or r/ky exceeds 3 mm
   double tolerance_N = 1e-6;        ///< stop when |r| < this
   double tolerance_mm = 1e-5;       ///< stop when the bracket (or a step) is narrower [mm]
   int max_iterations = 30;          ///< MAXNR: evaluations of r, the first one included

@@ -69,6 +69,27 @@ TEST(LateralRailIteration, WithoutSpringTheFirstStepIsDystep0) {
   EXPECT_NEAR(r.dy_mm, std::cbrt(2.0), 1e-6);
 }
 
+TEST(LateralRailIteration, ASpringStepBeyondThreeMillimetresIsDystep0) {
+  // A soft rail (1 kN/mm) under a contact force of 3.5 MN at δy = 0 that vanishes within a few
+  // millimetres (the contact is lost as the rail gives way): the spring alone would move the
+  // rail by 3.5 m, leaving a bracket that MAXNR bisections cannot close (a random case). Such a
+  // step is DYSTEP0 instead (wheelrail-advanced.md §2.5: early steps at most 3 mm).
+  LateralRailSettings st;
+  st.stiffness_N_per_mm = 1e3;
+  st.first_step_mm = 1.0;
+  double second = 0.0;
+  int calls = 0;
+  const auto residual = [&](double x) {
+    if (++calls == 2) second = x;
+    const double contact = x > -2.0 ? -3.5e6 * (x + 2.0) / 2.0 : 0.0;  // eases to 0 at −2 mm
+    return 9526.0 + 1e3 * (-x) + contact;                              // preload, spring, contact
+  };
+  const LateralRailResult r = solve_lateral_rail(st, residual);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_DOUBLE_EQ(second, -1.0);
+  EXPECT_NEAR(residual(r.dy_mm), 0.0, 1e-3 * 9526.0);
+}
+
 TEST(LateralRailIteration, AJumpInTheForceIsReportedNotHidden) {
   LateralRailSettings st;
   st.stiffness_N_per_mm = 10.0;
