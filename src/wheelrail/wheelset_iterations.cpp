@@ -164,8 +164,12 @@ WheelRailSolution WheelsetSolver::Impl::solve_for_height(
   // full solves only (KPEC sweeps: 746 → 437 iterates per 101 cases, docs/decisions.md).
   const bool cheap_tangential =
       p.patch.bodies.compliance != model::TangentialCompliance::ExactHalfSpace;
+  // Viscoelastic bodies (M=1): the normal problem itself depends on the rolling (the delayed
+  // response is integrated along the rolling path), so there is no normal-only estimate.
+  const bool rolling_normal_problem = p.patch.bodies.viscoelastic;
   const wheelrail::VerticalForceResult vf =
-      p.patch.tangential.kind == model::TangentialKind::None || cheap_tangential
+      p.patch.tangential.kind == model::TangentialKind::None || cheap_tangential ||
+              rolling_normal_problem
           ? wheelrail::solve_vertical_force(settings, z0, z1, full_at)
           : wheelrail::solve_vertical_force_split(settings, z0, z1, full_at, normal_at, &rough_at);
   result.trace = vf.trace;

@@ -327,5 +327,36 @@ TEST(WheelsetSolver, ApproximatePressuresAtFirstContactCarryNoTangentialTraction
   }
 }
 
+TEST(WheelsetSolver, ViscoelasticBodiesAtPrescribedVerticalForce) {
+  // M=1 with the vertical force prescribed failed every case ("viscoelastic bodies need steady
+  // rolling"): the split iteration's normal-only estimates have no rolling, while a viscoelastic
+  // normal problem depends on it. Full solves only: FZ is met, a creep ratio of 1e-9 gives the
+  // elastic answer, and a real one (FG = 0.5) a softer contact (the delayed compliance adds to
+  // the glassy one the elastic case has): the wheelset sinks deeper for the same load.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0, 0.05);
+  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.search.dx_mm = p.search.ds_mm = 1.0;
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 5000.0;
+  p.motion.vpitch_rad_s *= 1.0005;  // some longitudinal creepage
+  const WheelRailSolution elastic = WheelsetSolver().solve(p);
+  ASSERT_TRUE(elastic.converged) << elastic.message;
+  auto viscous = [&](double creep_ratio) {
+    model::WheelRailProblem q = p;
+    q.patch.bodies.viscoelastic = true;
+    q.patch.bodies.viscous1 = q.patch.bodies.viscous2 = {creep_ratio, 1e-3};  // ℓ = 2 mm
+    return WheelsetSolver().solve(q);
+  };
+  const WheelRailSolution nearly = viscous(1e-9);
+  ASSERT_TRUE(nearly.converged) << nearly.message;
+  EXPECT_NEAR(nearly.force_tr.z, 5000.0, 1e-5 * 5000.0 * 1.01);
+  EXPECT_NEAR(nearly.z_ws_mm, elastic.z_ws_mm, 1e-6);
+  EXPECT_NEAR(nearly.force_tr.x, elastic.force_tr.x, 1e-4 * 5000.0);
+  const WheelRailSolution real = viscous(0.5);
+  ASSERT_TRUE(real.converged) << real.message;
+  EXPECT_NEAR(real.force_tr.z, 5000.0, 1e-5 * 5000.0 * 1.01);
+  EXPECT_GT(real.z_ws_mm, elastic.z_ws_mm + 1e-4);
+}
+
 }  // namespace
 }  // namespace rollcontact
