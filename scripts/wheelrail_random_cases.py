@@ -6,8 +6,9 @@ Each case draws the wheel (left or right), lateral position (-15..16 mm), yaw (+
 roll, cant, vertical load (10 N..300 kN, log-uniform) or wheelset height, DX = DS (0.1..3 mm),
 friction, speed (also backwards, fast and nearly standing), the separation/combination
 distances, the pressures and tangential model (exact, KPEC, ANALYN; exact or Fastsim), the
-contact approach (planar D=2, conformal D=4, brute-force D=5) and a massless rail (F=3, rail
-stiffnesses 1e3..1e7 N/mm and preloads) or none. A case is a *problem* when the process
+contact approach (planar D=2, conformal D=4, brute-force D=5), a massless rail (F=3, rail
+stiffnesses 1e3..1e7 N/mm and preloads) or none, and a track or a roller rig (C1 = 4, 5: roller
+radius 300, 600, 1e5 mm or an internal ring of 1500 mm). A case is a *problem* when the process
 
   * crashes, hangs (timeout) or reports an internal error,
   * writes no JSON, or
@@ -52,7 +53,8 @@ PROFILES = ["MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"]
 def draw(rng):
     """One case's parameters."""
     p = dict(B=rng.choice([0, 0, 0, 5, 6]), N=rng.choice([1, 1, 0]), D=rng.choice([2, 2, 4, 5]),
-             C=rng.choice([0, 1]), F=rng.choice([0, 0, 3]),
+             C=rng.choice([0, 1, 0, 1, 4, 5]), F=rng.choice([0, 0, 3]),
+             nomradr=rng.choice([300.0, 600.0, 1e5, -1500.0]),
              krail=[rng.choice([1e3, 1e5, 1e7]), rng.uniform(-2e4, 2e4),
                     rng.choice([1e3, 1e5, 1e7]), rng.uniform(-1e5, 0.0)],
              dx=rng.choice([0.1, 0.15, 0.3, 0.5, 1.0, 2.0, 3.0]), mu=rng.uniform(0.05, 0.6),
@@ -66,6 +68,11 @@ def draw(rng):
     p["fz"] = (math.exp(rng.uniform(math.log(10.0), math.log(3e5))) if p["N"] == 1
                else rng.uniform(-0.3, 2.0))
     p["vpitch"] = -p["vs"] / 460.0 * (1 + rng.uniform(-0.01, 0.01))
+    if p["C"] >= 4:  # a roller rig: no cant; its angular velocity replaces VS (positive forward)
+        p["cant"] = 0.0
+        p["rpitch"] = p["vs"] / p["nomradr"]
+        if p["F"] == 3:
+            p["F"] = 0
     return p
 
 
@@ -81,7 +88,7 @@ def case_text(p):
     if p["M"] == 3:
         lines.append("  1.000   1.000   1.000                      K0_MF, ALFAMF, BETAMF")
     lines += [f"  {p['dx']}   {p['dx']}   1.000   {p['asep']}   {p['dsep']}   {p['dcomb']}",
-              f"   14.0     0    1435.0   {p['cant']:.5f}",
+              f"   14.0     0    1435.0   {p['nomradr'] if p['C'] >= 4 else p['cant']:.5f}",
               f"  '{PROFILES[0]}'   0     1.0   0.0",
               "     0.0    0.0   0.000   0.0   0.0   0.000"]
     if p["F"] == 3:
@@ -90,7 +97,8 @@ def case_text(p):
     lines += ["  1360.0  -70.0   460.0",
               f"  '{PROFILES[1]}'   0     1.0   0.0",
               f"  0.0  {p['y']:.6f}  {p['fz']:.6g} {p['roll']:.6f} {p['yaw']:.6f}  0.0",
-              f" {p['vs']:.1f} 0.0    0.0   0.0        0.0  {p['vpitch']:.8f}"]
+              f" {p['rpitch'] if p['C'] >= 4 else p['vs']:.8g} 0.0    0.0   0.0        0.0  "
+              f"{p['vpitch']:.8f}"]
     return "\n".join(lines) + "\n"
 
 
