@@ -7,8 +7,9 @@ roll, cant, vertical load (10 N..300 kN, log-uniform) or wheelset height, DX = D
 friction, speed (also backwards, fast and nearly standing), the separation/combination
 distances, the pressures and tangential model (exact, KPEC, ANALYN; exact or Fastsim), the
 contact approach (planar D=2, conformal D=4, brute-force D=5), a massless rail (F=3, rail
-stiffnesses 1e3..1e7 N/mm and preloads) or none, and a track or a roller rig (C1 = 4, 5: roller
-radius 300, 600, 1e5 mm or an internal ring of 1500 mm). A case is a *problem* when the process
+stiffnesses 1e3..1e7 N/mm and preloads) or none, a track or a roller rig (C1 = 4, 5: roller
+radius 300, 600, 1e5 mm or an internal ring of 1500 mm), and one friction coefficient or 1, 2
+or 4 varying with the rail's inclination (V=1) or along the track (V=2). A case is a *problem* when the process
 
   * crashes, hangs (timeout) or reports an internal error,
   * writes no JSON, or
@@ -54,7 +55,8 @@ def draw(rng):
     """One case's parameters."""
     p = dict(B=rng.choice([0, 0, 0, 5, 6]), N=rng.choice([1, 1, 0]), D=rng.choice([2, 2, 4, 5]),
              C=rng.choice([0, 1, 0, 1, 4, 5]), F=rng.choice([0, 0, 3]),
-             nomradr=rng.choice([300.0, 600.0, 1e5, -1500.0]),
+             nomradr=rng.choice([300.0, 600.0, 1e5, -1500.0]), V=rng.choice([0, 0, 0, 1, 2]),
+             nvf=rng.choice([1, 2, 4]), s_ws=rng.uniform(-50.0, 150.0),
              krail=[rng.choice([1e3, 1e5, 1e7]), rng.uniform(-2e4, 2e4),
                     rng.choice([1e3, 1e5, 1e7]), rng.uniform(-1e5, 0.0)],
              dx=rng.choice([0.1, 0.15, 0.3, 0.5, 1.0, 2.0, 3.0]), mu=rng.uniform(0.05, 0.6),
@@ -80,11 +82,20 @@ def case_text(p):
     """The case as a CONTACT .inp (module 1, first case of its run)."""
     lines = [" 1 MODULE",
              f" {p['C']}2{p['B']}3{p['N']}{p['F']}0    C-P-B-T-N-F-S",
-             f" 00{p['D']}2{p['M']}33    V-L-D-C-M-Z-E",
+             f" {p['V']}0{p['D']}2{p['M']}33    V-L-D-C-M-Z-E",
              " 0000321    H-G-I-A-O-W-R",
-             "    999     100    30    1     1e-5         MAXGS, MAXIN, MAXNR, MAXOUT, EPS",
-             f"  {p['mu']:.3f}   {p['mu']:.3f}                               FSTAT, FKIN",
-             "  0.280   0.280   82000.  82000.             POISS 1,2, GG 1,2"]
+             "    999     100    30    1     1e-5         MAXGS, MAXIN, MAXNR, MAXOUT, EPS"]
+    if p["V"] == 0:
+        lines.append(f"  {p['mu']:.3f}   {p['mu']:.3f}                               FSTAT, FKIN")
+    else:
+        # V=1: friction by the rail's surface inclination [deg]; V=2: along the track [mm].
+        lines.append(f"  {p['nvf']}                                   NVF")
+        for k in range(p["nvf"]):
+            at = (f"{-40.0 + 60.0 * k / max(p['nvf'] - 1, 1):.1f}d" if p["V"] == 1
+                  else f"{-20.0 + 100.0 * k:.1f}")
+            mu = p["mu"] * (0.5 + 0.5 * k / max(p["nvf"] - 1, 1))
+            lines.append(f"  {at}   {mu:.3f}   {mu:.3f}            ALPHA|SVF, FSTAT, FKIN")
+    lines.append("  0.280   0.280   82000.  82000.             POISS 1,2, GG 1,2")
     if p["M"] == 3:
         lines.append("  1.000   1.000   1.000                      K0_MF, ALFAMF, BETAMF")
     lines += [f"  {p['dx']}   {p['dx']}   1.000   {p['asep']}   {p['dsep']}   {p['dcomb']}",
@@ -96,7 +107,7 @@ def case_text(p):
                      .format(*p["krail"]))
     lines += ["  1360.0  -70.0   460.0",
               f"  '{PROFILES[1]}'   0     1.0   0.0",
-              f"  0.0  {p['y']:.6f}  {p['fz']:.6g} {p['roll']:.6f} {p['yaw']:.6f}  0.0",
+              f"  {p['s_ws']:.3f}  {p['y']:.6f}  {p['fz']:.6g} {p['roll']:.6f} {p['yaw']:.6f}  0.0",
               f" {p['rpitch'] if p['C'] >= 4 else p['vs']:.8g} 0.0    0.0   0.0        0.0  "
               f"{p['vpitch']:.8f}"]
     return "\n".join(lines) + "\n"
@@ -146,7 +157,7 @@ def random_walk(rng, length):
     base = draw(rng)
     base.update(N=1, F=0, B=rng.choice([0, 0, 5]), D=rng.choice([2, 2, 4]),
                 dx=rng.choice([0.3, 0.5, 1.0]), vs=2000.0, vpitch=-2000.0 / 460.0, roll=0.0,
-                cant=0.0, asep="90d", dsep=8.0, dcomb=4.0)
+                cant=0.0, asep="90d", dsep=8.0, dcomb=4.0, V=0, C=rng.choice([0, 1]), s_ws=0.0)
     base["M"] = 3 if base["B"] == 5 else rng.choice([0, 0, 3])
     y, yaw, fz = rng.uniform(-3.0, 6.0), 0.0, 1.0e4
     cases = []
