@@ -37,26 +37,51 @@ LocusPoint sliced_locus_point(const PlacedProfiles& prof, const WheelsetPose& po
     return pose.wheel_centre +
            pose.wheel_rotation * Vec3{r * std::sin(phi), y_ws, r * std::cos(phi)};
   };
+  // The wheel's point at angle phi and another profile position (for the lateral slope).
+  const auto point_at_profile = [&](double phi, double y_profile) {
+    const SurfacePoint w = surface.at(prof.wheel_theta_rad() + phi, y_profile);
+    const double r = r0 + (w.found ? w.z : 0.0);
+    return pose.wheel_centre + pose.wheel_rotation * Vec3{r * std::sin(phi),
+                                                          prof.wheel_y_offset_mm() + y_profile,
+                                                          r * std::cos(phi)};
+  };
+  // The locus is the deepest point along a line of constant track y, not along the circle: with
+  // yaw or roll the circle runs across the track, and on a steep flank (the flange) its lowest
+  // point lies beside the locus (a flange contact 20 mrad yawed was missed by 0.19 mm). At the
+  // deepest point of the surface along y = const, dz/dφ = s·dy/dφ with s = ∂z/∂y across the
+  // profile at fixed φ, so the depth measured is z − s·y with s taken at the start angle (for a
+  // round wheel the start is the closed-form locus, where this holds exactly).
+  // Without yaw and roll the circle keeps its track y, and z alone decides.
+  constexpr double kSlopeStep_mm = 0.05;
+  const Mat3& R = pose.wheel_rotation;
+  double slope = 0.0;
+  if (std::abs(R.r[1][0]) + std::abs(R.r[1][2]) > 1e-14) {
+    const Vec3 across_lo = point_at_profile(phi_start, y_p - kSlopeStep_mm);
+    const Vec3 across_hi = point_at_profile(phi_start, y_p + kSlopeStep_mm);
+    const double dy = across_hi.y - across_lo.y;
+    if (std::abs(dy) > 1e-12) slope = (across_hi.z - across_lo.z) / dy;
+  }
+  const auto depth = [&](const Vec3& q) { return q.z - slope * q.y; };
   // Scan the window for the deepest sample (a flat can make two local maxima: its edges), then
-  // narrow the bracket around it by golden sections.
-  double best_phi = phi_start, best_z = point_at(phi_start, true).z;
+  // narrow the bracket around it.
+  double best_phi = phi_start, best_depth = depth(point_at(phi_start, true));
   const int steps = static_cast<int>(kWindow_rad / kScanStep_rad);
   for (int i = -steps; i <= steps; ++i) {
     const double phi = phi_start + kScanStep_rad * i;
-    const double z = point_at(phi, true).z;
-    if (z > best_z) {
-      best_z = z;
+    const double d = depth(point_at(phi, true));
+    if (d > best_depth) {
+      best_depth = d;
       best_phi = phi;
     }
   }
   if (!found) return {};
-  // The deepest point is the lowest: the minimum of −z, by Brent's method to 1e-7 rad (about 8
+  // The deepest point: the minimum of −depth, by Brent's method to 1e-7 rad (about 8
   // evaluations where golden sections took 22).
-  double minus_z = 0.0;
+  double minus_depth = 0.0;
   const double phi =
-      brent_minimum([&](double p) { return -point_at(p).z; }, best_phi - kScanStep_rad,
-                    best_phi + kScanStep_rad, 1e-7, 100, minus_z);
-  return {-minus_z >= best_z ? point_at(phi) : point_at(best_phi), found};
+      brent_minimum([&](double p) { return -depth(point_at(p)); }, best_phi - kScanStep_rad,
+                    best_phi + kScanStep_rad, 1e-7, 100, minus_depth);
+  return {-minus_depth >= best_depth ? point_at(phi) : point_at(best_phi), found};
 }
 
 }  // namespace rollcontact::wheelrail

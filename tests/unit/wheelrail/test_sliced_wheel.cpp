@@ -59,6 +59,25 @@ TEST(SlicedWheel, IdenticalSlicesGiveThePlainWheel) {
   EXPECT_NEAR(s.patches[0].reference_tr.y, plain.patches[0].reference_tr.y, 2.5e-3);
 }
 
+TEST(SlicedWheel, YawedSteepFlankOfIdenticalSlicesIsThePlainWheels) {
+  // A 30 mrad yawed cone of slope 0.5 on a 40 mm crown: the locus lies 15 mm off the axle, where
+  // the surface is deepest along a line of constant track y — not the lowest point of the
+  // wheel's circle, which the circle crosses the track beside it (R·(s·ψ)²/2 = 0.05 mm higher
+  // here). A flange 20 mrad yawed on a wheel flat's slices missed its contact by 0.19 mm.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(40.0, 0.5);
+  p.motion.yaw_rad = 0.03;
+  p.motion.z_mm = 0.1;
+  const WheelRailSolution plain = WheelsetSolver().solve(p);
+  const WheelRailSolution s = WheelsetSolver().solve(sliced(p, 0.1, [](double) { return 0.0; }));
+  ASSERT_TRUE(plain.converged && s.converged) << s.message;
+  ASSERT_EQ(plain.patches.size(), 1u);
+  ASSERT_EQ(s.patches.size(), 1u);
+  EXPECT_GT(std::abs(plain.patches[0].reference_tr.x), 3.0);  // off the axle
+  EXPECT_NEAR(s.force_tr.z, plain.force_tr.z, 2e-3 * plain.force_tr.z);
+  EXPECT_NEAR(s.patches[0].solution.totals.pen, plain.patches[0].solution.totals.pen, 2e-4);
+  EXPECT_NEAR(s.patches[0].reference_tr.x, plain.patches[0].reference_tr.x, 0.05);
+}
+
 TEST(SlicedWheel, ConformalPatchOfIdenticalSlicesIsThePlainWheels) {
   // D=4 through the C++ API (the .inp route refuses wheel slices): the curved reference takes
   // the wheel's cross-section under the axle, the gap and the rigid slip the 2-D surface.
