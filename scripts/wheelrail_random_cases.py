@@ -19,6 +19,10 @@ or 4 varying with the rail's inclination (V=1) or along the track (V=2). A case 
 Errors and non-converged cases with their messages are legitimate answers (a patch smaller
 than an element whose force jumps over the target, say) and are listed, not counted.
 
+With --wheel-flat it draws cases of CONTACT's wheel-flat example instead (the Chalmers flat's
+258 slices on a 300 mm crowned rail, run with --unvalidated): lateral position -6..10 mm, yaw
++-20 mrad, the wheel turned anywhere (-180..180 degrees), 1..300 kN or the height, DX 0.4 or 1 mm.
+
 With --sequences K it runs K random walks of --length cases each as one sequence (the lateral
 position wandering with jumps, yaw drifting, the load changing now and then, I = 0 or 1 at
 random) and every case of them again alone: steady rolling has no memory, so a case's answer
@@ -76,6 +80,22 @@ def draw(rng):
         if p["F"] == 3:
             p["F"] = 0
     return p
+
+
+def wheel_flat_case(rng):
+    """A case of CONTACT's wheel-flat example (`wheelflat.inp`'s first case, varied)."""
+    head = (EXAMPLES / "wheelflat.inp").read_text().split("\n")[6:19]
+    n_digit = rng.choice([1, 1, 0])
+    p = dict(N=n_digit, fz=math.exp(rng.uniform(math.log(1e3), math.log(3e5))))
+    if n_digit == 0:
+        p["fz"] = rng.uniform(-0.5, 2.0)  # the height [mm]
+    dx = rng.choice([0.4, 1.0])
+    head[1] = f" 1203{n_digit}00    C-P-B-T-N-F-S"
+    head[7] = f"  {dx}   {dx}   1.000   90d   8.0   4.0"
+    head += [f"  0.0  {rng.uniform(-6.0, 10.0):.6f}  {p['fz']:.6g} 0.000  "
+             f"{rng.uniform(-0.02, 0.02):.6f}   {rng.uniform(-180.0, 180.0):.4f}d",
+             " 2000. 0.0  0.0    0.0    0.0    -4.08190679"]
+    return p, "\n".join(head) + "\n"
 
 
 def case_text(p):
@@ -222,10 +242,13 @@ def main():
     ap.add_argument("--sequences", type=int, default=0,
                     help="run this many random walks as sequences instead (see above)")
     ap.add_argument("--length", type=int, default=30, help="cases per sequence")
+    ap.add_argument("--wheel-flat", action="store_true",
+                    help="cases of CONTACT's wheel-flat example (wheel slices) instead")
     args = ap.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
-    for name in PROFILES:
+    for name in PROFILES + ["r300_wide.prr", "S1002_flat.slcw"]:
         shutil.copyfile(EXAMPLES / name, args.out / name)
+    shutil.copytree(EXAMPLES / "S1002_flat", args.out / "S1002_flat", dirs_exist_ok=True)
     rng = random.Random(args.seed)
     if args.sequences > 0:
         counts, problems = run_sequences(args, rng)
@@ -233,12 +256,18 @@ def main():
         return 1 if problems else 0
     counts, problems = {}, 0
     for k in range(args.cases):
-        p = draw(rng)
+        if args.wheel_flat:
+            p, text = wheel_flat_case(rng)
+        else:
+            p = draw(rng)
+            text = case_text(p)
         inp = args.out / f"case_{args.seed}_{k}.inp"
-        inp.write_text(case_text(p))
+        inp.write_text(text)
+        command = [args.exe, "run", str(inp), "-o", str(args.out / "out"), "-q"]
+        if args.wheel_flat:
+            command.append("--unvalidated")  # wheel slices: solved with a warning
         try:
-            run = subprocess.run([args.exe, "run", str(inp), "-o", str(args.out / "out"), "-q"],
-                                 capture_output=True, text=True, timeout=args.timeout)
+            run = subprocess.run(command, capture_output=True, text=True, timeout=args.timeout)
         except subprocess.TimeoutExpired:
             problems += 1
             print(f"PROBLEM {inp.name}: no answer within {args.timeout} s  {p}")
