@@ -88,6 +88,20 @@ std::string pair(double a, double b) {
 }
 
 /// Writes one case; `out` receives TOML text.
+/// The law values of one friction set as `key = value` pairs separated by `sep`.
+std::string law_values(int law, const FrictionValues& v, std::string_view sep) {
+  const std::array<double, 4>& q = v.params;
+  if (law == 0) return fmt::format("static = {}{}kinetic = {}", real(v.fstat), sep, real(v.fkin));
+  if (law == 6) {
+    return fmt::format(
+        "reference = {1}{0}reference_temperature_C = {2}{0}change = {3}{0}temperature_span_C = "
+        "{4}",
+        sep, real(v.fkin), real(q[0]), real(q[1]), real(q[2]));
+  }
+  return fmt::format("kinetic = {1}{0}excess = {2}{0}decay_speed_mm_per_s = {3}", sep, real(v.fkin),
+                     pair(q[0], q[2]), pair(q[1], q[3]));
+}
+
 class CaseWriter {
  public:
   CaseWriter(std::string& out, const CaseRecord& p, const std::filesystem::path& base_dir)
@@ -109,8 +123,10 @@ class CaseWriter {
   }
 
   /// The sections a wheel/rail case shares with module 3 (its patch settings).
-  void write_shared() {
-    friction();
+  /// The tables module 3 and wheel/rail cases share; `with_friction` false: the caller writes
+  /// [case.friction] itself (a wheel/rail case's friction varying along the rail).
+  void write_shared(bool with_friction = true) {
+    if (with_friction) friction();
     material();
     solver();
     output();
@@ -185,22 +201,6 @@ class CaseWriter {
     }
   }
 
-  /// The law values of one set as `key = value` pairs separated by `sep`.
-  std::string friction_values(int law, double fstat, double fkin, const std::array<double, 4>& q,
-                              std::string_view sep) {
-    if (law == 0) {
-      return fmt::format("static = {}{}kinetic = {}", real(fstat), sep, real(fkin));
-    }
-    if (law == 6) {
-      return fmt::format(
-          "reference = {1}{0}reference_temperature_C = {2}{0}change = {3}{0}temperature_span_C = "
-          "{4}",
-          sep, real(fkin), real(q[0]), real(q[1]), real(q[2]));
-    }
-    return fmt::format("kinetic = {1}{0}excess = {2}{0}decay_speed_mm_per_s = {3}", sep, real(fkin),
-                       pair(q[0], q[2]), pair(q[1], q[3]));
-  }
-
   void friction() {
     const Friction& f = p_.friction;
     table("friction");
@@ -208,11 +208,10 @@ class CaseWriter {
     if (p_.digits.v == 3) {
       out_ += "rows = [  # one per grid row iy = 1..MY\n";
       for (const FrictionValues& r : f.rows)
-        out_ +=
-            fmt::format("  {{ {} }},\n", friction_values(f.law, r.fstat, r.fkin, r.params, ", "));
+        out_ += fmt::format("  {{ {} }},\n", law_values(f.law, r, ", "));
       out_ += "]\n";
     } else if (p_.digits.v == 0) {
-      out_ += friction_values(f.law, f.fstat, f.fkin, f.params, "\n") + "\n";
+      out_ += law_values(f.law, {f.fstat, f.fkin, f.params}, "\n") + "\n";
     } else {
       throw Error(fmt::format("case {}: variable friction V={} has no TOML case-file equivalent",
                               p_.case_number, p_.digits.v));
@@ -494,11 +493,10 @@ class WheelRailWriter {
 
   void write() {
     const ControlDigits& d = r_.digits;
-    if (r_.variable_friction.v != 0 || d.f == 2 || r_.rail.sliced || r_.wheel.sliced)
-      throw Error(
-          fmt::format("case {}: variable friction, prescribed MY_WS (F=2) and variable profiles "
-                      "have no TOML case-file equivalent yet",
-                      r_.case_number));
+    if (r_.rail.sliced || r_.wheel.sliced)
+      throw Error(fmt::format(
+          "case {}: variable profiles (slices files) have no TOML case-file equivalent yet",
+          r_.case_number));
     out_ += "\n[[case]]\n";
     if (!r_.source.file.empty())
       out_ += fmt::format("# from {} line {} (case {}, module 1)\n", r_.source.file,
@@ -512,7 +510,9 @@ class WheelRailWriter {
       table("case.normal");
       line("method", named(schema::normal_method, d.b, "B", id_));
     }
-    CaseWriter(out_, id_, base_dir_).write_shared();
+    const bool varying_friction = r_.variable_friction.v != 0;
+    if (varying_friction) friction_along_rail();
+    CaseWriter(out_, id_, base_dir_).write_shared(!varying_friction);
     wheel_rail();
   }
 
@@ -521,6 +521,26 @@ class WheelRailWriter {
     out_ += fmt::format("{} = {}\n", key, value);
   }
   void table(std::string_view name) { out_ += fmt::format("\n[{}]\n", name); }
+
+  /// [case.friction] with V=1, 2: one set of law values per control point.
+  void friction_along_rail() {
+    const Friction& f = r_.friction;
+    const VariableFriction& vf = r_.variable_friction;
+    table("case.friction");
+    line("law", named(schema::friction_law, f.law, "L", id_));
+    line("along", vf.v == 1 ? "\"inclination\"  # ALPHA [rad]" : "\"track\"  # SVF [mm]");
+    out_ += "points = [\n";
+    for (std::size_t k = 0; k < vf.sets.size(); ++k) {
+      const FrictionValues& s = vf.sets[k];
+      out_ +=
+          fmt::format("  {{ at = {}, {} }},\n", real(vf.positions[k]), law_values(f.law, s, ", "));
+    }
+    out_ += "]\n";
+    if (f.law == 2 || f.law == 3 || f.law == 4 || f.law == 6) {
+      line("memory_distance_mm", real(f.memdst));
+      line("memory_speed_mm_per_s", real(f.mem_s0));
+    }
+  }
 
   void profile(std::string_view key, const ProfileSpec& ps) {
     table(fmt::format("case.wheel_rail.{}", key));

@@ -5,6 +5,7 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <string_view>
@@ -198,14 +199,48 @@ FrictionValues read_friction_values(Table& t, int law) {
 
 }  // namespace
 
-void read_friction(Table& c, CaseRecord& p) {
+namespace {
+
+/// Friction along the track or with the rail's inclination (V=1, 2; wheel/rail cases only).
+void read_friction_points(Table& t, int law, CaseRecord& p, VariableFriction* variation) {
+  if (variation == nullptr)
+    t.fail_key("points", "friction varying along the rail (V=1, 2) is for wheel/rail cases");
+  constexpr std::array<schema::Choice, 2> along{{{1, "inclination"}, {2, "track"}}};
+  const auto v = t.opt_choice("along", along);
+  if (!v) t.fail("friction 'points' need 'along' (\"inclination\" or \"track\")");
+  std::vector<Table> points = t.tables("points");
+  if (points.empty()) t.fail_key("points", "needs at least one control point");
+  if (points.size() > 99) t.fail_key("points", "at most 99 control points (NVF)");
+  *variation = VariableFriction{};
+  variation->v = *v;
+  for (Table& q : points) {
+    const double at = q.real("at");
+    if (!variation->positions.empty() && !(at > variation->positions.back()))
+      q.fail_key("at", fmt::format("control points must be strictly increasing: {} follows {}", at,
+                                   variation->positions.back()));
+    variation->positions.push_back(at);
+    variation->sets.push_back(read_friction_values(q, law));
+    q.finish();
+  }
+  p.digits.v = *v;
+  const FrictionValues& first = variation->sets.front();
+  p.friction.fstat = first.fstat;
+  p.friction.fkin = first.fkin;
+  p.friction.params = first.params;
+}
+
+}  // namespace
+
+void read_friction(Table& c, CaseRecord& p, VariableFriction* variation) {
   Friction& f = p.friction;
   auto t = c.opt_table("friction");
   if (!t) return;  // CaseRecord's default: Coulomb 0.3
   f.law = t->choice_or("law", schema::friction_law, 0);
   p.digits.l = f.law;
   std::vector<Table> rows = t->tables("rows");
-  if (t->has("rows")) {
+  if (t->has("points")) {
+    read_friction_points(*t, f.law, p, variation);
+  } else if (t->has("rows")) {
     if (rows.empty()) t->fail_key("rows", "needs one entry per grid row");
     p.digits.v = 3;
     for (Table& r : rows) {

@@ -3,6 +3,7 @@
 // reads its keys from the case table, checks them with file, line and key path, and fills its
 // part of the CaseRecord.
 
+#include "format/inp/wheelrail_record.hpp"
 #include "format/toml/toml_table.hpp"
 
 namespace rollcontact::format::toml_input {
@@ -13,8 +14,11 @@ void read_solver(Table& c, CaseRecord& p);
 void read_normal(Table& c, CaseRecord& p);
 /// [tangential]: kind of problem, creepages or forces, rolling step.
 void read_tangential(Table& c, CaseRecord& p);
-/// [friction]: the friction law and its values (per grid row when given so).
-void read_friction(Table& c, CaseRecord& p);
+/// [friction]: the friction law and its values (per grid row when given so). `variation`, for a
+/// wheel/rail case: friction sets at control points along `along` ("inclination" V=1: the rail
+/// surface's inclination ALPHA [rad]; "track" V=2: SVF [mm]) as `points = [{at = …, <law
+/// values>}, …]`; without it such a table is an error (module 3 has no rail).
+void read_friction(Table& c, CaseRecord& p, VariableFriction* variation = nullptr);
 /// [material]: the bodies, their compliance model, the influence-coefficient file.
 void read_material(Table& c, const Context& ctx, CaseRecord& p);
 /// [grid]: the potential contact area (explicit or Hertzian).

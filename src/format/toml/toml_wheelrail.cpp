@@ -248,8 +248,9 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   // The shared sections through the module-3 readers, into a scratch record.
   CaseRecord shared;
   shared.source.file = file;
+  VariableFriction variation;
   read_solver(c, shared);
-  read_friction(c, shared);
+  read_friction(c, shared, &variation);
   read_material(c, ctx, shared);
   read_damping(c, shared);
   read_heat(c, shared);
@@ -285,6 +286,7 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   }
   r.solver = shared.solver;
   r.friction = shared.friction;
+  r.variable_friction = variation;
   r.materials = shared.materials;
   r.damping = shared.damping;
   r.heat = shared.heat;

@@ -104,6 +104,56 @@ TEST(TomlWheelRail, ConvertedBenchmarkFileGivesTheSameResults) {
   }
 }
 
+TEST(TomlWheelRail, FrictionAlongTheRailRoundTrip) {
+  // mbench_a22_varfric: friction with the rail's inclination (V=1; cases 1-4, planar and
+  // conformal) and along the track (V=2; cases 6, 7) as [case.friction] `along` and `points`:
+  // the records' friction sets, and the answers of the cases solved in sequence, are the .inp's
+  // bit for bit.
+  REQUIRE_EXAMPLES();
+  const auto from_inp = format::read_input_cases(examples_dir / "mbench_a22_varfric.inp");
+  const std::string text = format::write_toml_input_string(from_inp, examples_dir);
+  EXPECT_NE(text.find("along = \"inclination\""), std::string::npos);
+  EXPECT_NE(text.find("along = \"track\""), std::string::npos);
+  const auto from_toml = format::read_toml_input_string(text, "varfric.toml", examples_dir);
+  ASSERT_EQ(from_toml.size(), from_inp.size());
+  WheelsetSolver a, b;
+  for (std::size_t k = 0; k < from_inp.size(); ++k) {
+    const auto& wi = std::get<format::WheelRailRecord>(from_inp[k]);
+    const auto& wt = std::get<format::WheelRailRecord>(from_toml[k]);
+    SCOPED_TRACE("case " + std::to_string(wi.case_number));
+    EXPECT_EQ(wt.digits.v, wi.digits.v);
+    EXPECT_EQ(wt.variable_friction.v, wi.variable_friction.v);
+    EXPECT_EQ(wt.variable_friction.positions, wi.variable_friction.positions);
+    ASSERT_EQ(wt.variable_friction.sets.size(), wi.variable_friction.sets.size());
+    for (std::size_t j = 0; j < wi.variable_friction.sets.size(); ++j)
+      EXPECT_EQ(wt.variable_friction.sets[j].fkin, wi.variable_friction.sets[j].fkin);
+    const WheelRailSolution si = a.solve(format::to_wheelrail_problem(wi, true));
+    const WheelRailSolution st = b.solve(format::to_wheelrail_problem(wt, true));
+    EXPECT_EQ(st.force_tr.x, si.force_tr.x);
+    EXPECT_EQ(st.force_tr.y, si.force_tr.y);
+    EXPECT_EQ(st.force_tr.z, si.force_tr.z);
+  }
+}
+
+TEST(TomlWheelRail, FrictionPointsAreCheckedWithTheirKeys) {
+  const std::string head =
+      "[[case]]\n[case.normal]\nforce_N = 100\n[case.grid]\nhertz = { a_mm = 1, b_mm = 1 }\n"
+      "[case.material]\nbody1 = { poisson = 0.28, shear_modulus_MPa = 82000 }\n"
+      "body2 = { poisson = 0.28, shear_modulus_MPa = 82000 }\n[case.friction]\n";
+  auto message = [&](const std::string& friction) {
+    try {
+      (void)format::read_toml_input_string(head + friction, "f.toml", ".");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  // A module-3 case has no rail to vary along.
+  EXPECT_NE(message("along = \"track\"\npoints = [{ at = 0, kinetic = 0.3 }]\n")
+                .find("is for wheel/rail cases"),
+            std::string::npos);
+}
+
 TEST(TomlWheelRail, S1002On54E1ExampleAndItsTwin) {
   // examples/s1002_54e1.inp (the static case and the rolling case with traction of
   // docs/validation-fe.md) and its TOML twin solve to the same answers bit for bit. Case 1
