@@ -358,5 +358,25 @@ TEST(WheelsetSolver, ViscoelasticBodiesAtPrescribedVerticalForce) {
   EXPECT_GT(real.z_ws_mm, elastic.z_ws_mm + 1e-4);
 }
 
+TEST(WheelsetSolver, AnApproachBeyondSmallStrainsIsWarnedAbout) {
+  // A wheelset height typed in the wrong unit: 5 mm into a 300 mm crown is 10 % of the patch's
+  // radius and more (the benchmark's patches: at most 4 %). Solved, with a warning; 0.05 mm none.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0, 0.05);
+  p.search.dx_mm = p.search.ds_mm = 1.0;
+  auto warned = [](const WheelRailSolution& s) {
+    for (const std::string& w : s.warnings)
+      if (w.find("beyond the small strains") != std::string::npos) return true;
+    return false;
+  };
+  p.motion.z_mm = 0.05;
+  const WheelRailSolution fine = WheelsetSolver().solve(p);
+  ASSERT_TRUE(fine.converged) << fine.message;
+  EXPECT_FALSE(warned(fine));
+  p.motion.z_mm = 5.0;
+  const WheelRailSolution deep = WheelsetSolver().solve(p);
+  ASSERT_FALSE(deep.patches.empty());
+  EXPECT_TRUE(warned(deep));
+}
+
 }  // namespace
 }  // namespace rollcontact
