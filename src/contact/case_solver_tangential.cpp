@@ -39,12 +39,7 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
     // exact solvers: Fastsim's flexibilities would need a patch. It happens to KPEC and ANALYN
     // iterates of the vertical-force iteration at first contact, where the interpenetration is
     // too small for any element's centre to carry pressure.
-    tangential::TangentialResult empty;
-    empty.px.assign(n, 0.0);
-    empty.py.assign(n, 0.0);
-    empty.sx.assign(n, 0.0);
-    empty.sy.assign(n, 0.0);
-    empty.state.assign(n, ElementState::Exterior);
+    tangential::TangentialResult empty = tangential::no_tractions(n);
     empty.converged = true;
     simplified_ux_.assign(n, 0.0);
     simplified_uy_.assign(n, 0.0);
@@ -285,12 +280,7 @@ tangential::TangentialResult CaseSolver::solve_temperature_dependent(double cksi
   const std::vector<char> contact = contact_set();
   // Start from the temperatures without frictional heat (bulk, and the contact temperature in
   // the contact): a solution with every element adhering.
-  tangential::TangentialResult cold;
-  cold.px.assign(n, 0.0);
-  cold.py.assign(n, 0.0);
-  cold.sx.assign(n, 0.0);
-  cold.sy.assign(n, 0.0);
-  cold.state.assign(n, ElementState::Exterior);
+  tangential::TangentialResult cold = tangential::no_tractions(n);
   for (std::size_t i = 0; i < n; ++i)
     if (contact[i]) cold.state[i] = ElementState::Adhesion;
   contact::TemperatureIterationSettings settings;

@@ -74,13 +74,7 @@ tangential::TangentialSystem restrict_to_box(const tangential::TangentialSystem&
 
 tangential::TangentialResult expand_from_box(const tangential::TangentialResult& r,
                                              const Grid& grid, const ContactBox& box) {
-  tangential::TangentialResult out;
-  const std::size_t n = grid.size();
-  out.px.assign(n, 0.0);
-  out.py.assign(n, 0.0);
-  out.sx.assign(n, 0.0);
-  out.sy.assign(n, 0.0);
-  out.state.assign(n, ElementState::Exterior);
+  tangential::TangentialResult out = tangential::no_tractions(grid.size());
   for (int iy = 0; iy < box.grid.my; ++iy)
     for (int ix = 0; ix < box.grid.mx; ++ix) {
       const std::size_t b = box.grid.index(ix, iy), f = grid.index(box.ix0 + ix, box.iy0 + iy);

@@ -72,6 +72,18 @@ struct TangentialResult {
   std::string message;
 };
 
+/// A result of `n` elements without tractions or slip, every element exterior (not converged:
+/// the caller says whether it is an answer or a start).
+inline TangentialResult no_tractions(std::size_t n) {
+  TangentialResult r;
+  r.px.assign(n, 0.0);
+  r.py.assign(n, 0.0);
+  r.sx.assign(n, 0.0);
+  r.sy.assign(n, 0.0);
+  r.state.assign(n, ElementState::Exterior);
+  return r;
+}
+
 /// Classifies and finalises a traction field: S = b + A p, states from |p| vs g. With `sx`, `sy`
 /// (full-grid slip known already) they are taken for S instead of a product.
 void finalise(const TangentialSystem& sys, TangentialResult& res,

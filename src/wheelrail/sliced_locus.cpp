@@ -26,24 +26,25 @@ std::size_t locus_scan_angles() {
 LocusPoint sliced_locus_point(const PlacedProfiles& prof, const WheelsetPose& pose, double y_p,
                               double phi_start, LocusScanSections* scan) {
   const SlicedSurface& surface = *prof.wheel_surface();
-  const double y_ws = prof.wheel_y_offset_mm() + y_p, r0 = prof.wheel_r0_mm();
+  const double r0 = prof.wheel_r0_mm();
+  // Track coordinates of the wheel's point at angle phi, profile position y_profile, radius r.
+  const auto placed = [&](double phi, double y_profile, double r) {
+    return pose.wheel_centre + pose.wheel_rotation * Vec3{r * std::sin(phi),
+                                                          prof.wheel_y_offset_mm() + y_profile,
+                                                          r * std::cos(phi)};
+  };
   bool found = true;
   const auto point_at = [&](double phi, bool scanned = false) {
     const double u = prof.wheel_theta_rad() + phi;
     const SurfaceSection* section = scanned && scan != nullptr ? scan->at(surface, u) : nullptr;
     const SurfacePoint w = section != nullptr ? surface.at(*section, y_p) : surface.at(u, y_p);
     if (!w.found) found = false;
-    const double r = r0 + w.z;
-    return pose.wheel_centre +
-           pose.wheel_rotation * Vec3{r * std::sin(phi), y_ws, r * std::cos(phi)};
+    return placed(phi, y_p, r0 + w.z);
   };
   // The wheel's point at angle phi and another profile position (for the lateral slope).
   const auto point_at_profile = [&](double phi, double y_profile) {
     const SurfacePoint w = surface.at(prof.wheel_theta_rad() + phi, y_profile);
-    const double r = r0 + (w.found ? w.z : 0.0);
-    return pose.wheel_centre + pose.wheel_rotation * Vec3{r * std::sin(phi),
-                                                          prof.wheel_y_offset_mm() + y_profile,
-                                                          r * std::cos(phi)};
+    return placed(phi, y_profile, r0 + (w.found ? w.z : 0.0));
   };
   // The locus is the deepest point along a line of constant track y, not along the circle: with
   // yaw or roll the circle runs across the track, and on a steep flank (the flange) its lowest
