@@ -33,7 +33,6 @@ constexpr FieldKind kReal = FieldKind::real;
 constexpr FieldKind kAngle = FieldKind::angle;
 
 constexpr double kMinElementSize = model::kMinElementSize_mm;  // DX, DS [mm]
-constexpr int kMaxFrictionSets = 10;                           // NVF
 constexpr int kDefaultNpotMax = 20000;
 
 /// Names of the law values after the V=1,2 prefix (spec §4.1).

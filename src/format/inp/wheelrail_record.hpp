@@ -15,6 +15,9 @@
 
 namespace rollcontact::format {
 
+/// At most this many control points of a V=1,2 friction variation (NVF ≤ 10, inp-format.md §3).
+inline constexpr int kMaxFrictionSets = 10;
+
 /// V=1,2 friction variation (spec/inp-format.md §5, line 7'): one set of law values per control
 /// point. The scalar members of WheelRailRecord::friction hold the first set.
 struct VariableFriction {

@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "format/inp/grid_extent.hpp"
+#include "format/inp/inp_blocks.hpp"
 #include "format/inp/reader_checks.hpp"
 #include "format/text/file_names.hpp"
 #include "format/toml/toml_sections.hpp"
@@ -210,7 +211,9 @@ void read_friction_points(Table& t, int law, CaseRecord& p, VariableFriction* va
   if (!v) t.fail("friction 'points' need 'along' (\"inclination\" or \"track\")");
   std::vector<Table> points = t.tables("points");
   if (points.empty()) t.fail_key("points", "needs at least one control point");
-  if (points.size() > 99) t.fail_key("points", "at most 99 control points (NVF)");
+  if (points.size() > static_cast<std::size_t>(kMaxFrictionSets))
+    t.fail_key("points", fmt::format("at most {} control points (NVF), found {}", kMaxFrictionSets,
+                                     points.size()));
   *variation = VariableFriction{};
   variation->v = *v;
   for (Table& q : points) {
@@ -223,10 +226,7 @@ void read_friction_points(Table& t, int law, CaseRecord& p, VariableFriction* va
     q.finish();
   }
   p.digits.v = *v;
-  const FrictionValues& first = variation->sets.front();
-  p.friction.fstat = first.fstat;
-  p.friction.fkin = first.fkin;
-  p.friction.params = first.params;
+  assign_friction_values(variation->sets.front(), p.friction);
 }
 
 }  // namespace

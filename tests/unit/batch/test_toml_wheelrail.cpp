@@ -1,6 +1,7 @@
 // Wheel/rail cases in TOML case files (docs/case-files.md): the same WheelRailRecord and the same
 // answer as the .inp route, and errors with file, line and key path.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -152,6 +153,39 @@ TEST(TomlWheelRail, FrictionPointsAreCheckedWithTheirKeys) {
   EXPECT_NE(message("along = \"track\"\npoints = [{ at = 0, kinetic = 0.3 }]\n")
                 .find("is for wheel/rail cases"),
             std::string::npos);
+  // A wheel/rail case: at most NVF = 10 points, strictly increasing, with `along` (as .inp).
+  REQUIRE_EXAMPLES();
+  const test_support::ScratchDir scratch("rollcontact_toml_friction_points");
+  const fs::path& dir = with_profiles(scratch);
+  std::ifstream in(toml_case);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string base = all.str();
+  const std::string coulomb = "static = 0.3\nkinetic = 0.3\n";
+  auto wheel_rail_message = [&](const std::string& friction) {
+    std::string text = base;
+    text.replace(text.find(coulomb), coulomb.size(), friction);
+    std::ofstream(dir / "f.toml") << text;
+    try {
+      (void)format::read_toml_input_file(dir / "f.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  std::string eleven = "along = \"track\"\npoints = [";
+  for (int k = 0; k < 11; ++k) eleven += fmt::format("{{ at = {}, kinetic = 0.3 }}, ", k);
+  EXPECT_NE(wheel_rail_message(eleven + "]\n").find("at most 10 control points"),
+            std::string::npos);
+  EXPECT_NE(wheel_rail_message("along = \"track\"\npoints = [{ at = 1, kinetic = 0.3 }, "
+                               "{ at = 1, kinetic = 0.2 }]\n")
+                .find("strictly increasing"),
+            std::string::npos);
+  EXPECT_NE(wheel_rail_message("points = [{ at = 1, kinetic = 0.3 }]\n").find("'along'"),
+            std::string::npos);
+  EXPECT_EQ(wheel_rail_message("along = \"inclination\"\npoints = [{ at = -0.3, kinetic = 0.2 "
+                               "}, { at = -0.1, kinetic = 0.3 }]\n"),
+            "accepted");
 }
 
 TEST(TomlWheelRail, S1002On54E1ExampleAndItsTwin) {
