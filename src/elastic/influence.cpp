@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "elastic/bilinear_kernel.hpp"
@@ -212,6 +213,18 @@ class CornerLattice {
     finish_row(y_high, high);
   }
 
+  /// F itself at every corner of the row at y, per component (not differenced).
+  const Rows& values(Real y) {
+    if (split_) {
+      radii_and_l1(y);
+      corner_values(y);
+    } else {
+      for (std::size_t k = 0; k < ctxs_.size(); ++k)
+        for (std::size_t i = 0; i < xs_.size(); ++i) f_[k][i] = corner(ctxs_[k], xs_[i], y);
+    }
+    return f_;
+  }
+
  private:
   /// r and L1 of every corner of the row at y (the same at −y).
   void radii_and_l1(Real y) {
@@ -231,6 +244,12 @@ class CornerLattice {
 
   /// L2 (halved on a mirrored x-lattice) and F of the row at y, then its differences.
   void finish_row(Real y, Rows& out) {
+    corner_values(y);
+    differences(out);
+  }
+
+  /// L2 and F of the row at y, after radii_and_l1(y).
+  void corner_values(Real y) {
     const std::size_t n = xs_.size();
     const Real log_floor = ctxs_.front().log_floor;
     for (std::size_t i = 0; i < n; ++i) {
@@ -254,7 +273,6 @@ class CornerLattice {
           f = j2 + (1.0L - c.nu) * j1;
       }
     }
-    differences(out);
   }
 
   void differences(Rows& out) const {
@@ -353,6 +371,65 @@ Kernel make_continuous_kernel(Component c, const Grid& grid, const CombinedMater
           .front());
 }
 
+std::vector<Kernel> make_integrated_kernels(const std::vector<Component>& cs, const Grid& grid,
+                                            const CombinedMaterial& material, double shift_y,
+                                            const CornerXRule& rule) {
+  check_grid(material, grid);
+  const int mx = grid.mx, my = grid.my, ncx = 2 * mx;
+  std::vector<Kernel> kernels(cs.size(), Kernel(mx, my));
+  const auto n = static_cast<std::size_t>(ncx);
+  if (rule.begin.size() != n + 1 || rule.carry.size() != n ||
+      rule.begin.back() > rule.x_mm.size() || rule.weight.size() != rule.x_mm.size())
+    throw std::logic_error("make_integrated_kernels: the rule does not fit the grid's corners");
+  const Real dx = grid.dx, dy = grid.dy;
+  // Continuous in x (no log guard), as the history integrals need (make_continuous_kernel).
+  // nn, xx, yy and xy share one lattice (their logarithms); the couplings take one each.
+  std::vector<std::vector<std::size_t>> groups(1);
+  for (std::size_t q = 0; q < cs.size(); ++q) {
+    if (is_coupling(cs[q]) && !is_coupled(material)) continue;  // stays zero
+    if (CornerLattice::splits({base_of(cs[q]).base, 0.0L, 0.0L, 0.0L}))
+      groups.front().push_back(q);
+    else
+      groups.push_back({q});
+  }
+  for (const std::vector<std::size_t>& group : groups) {
+    if (group.empty()) continue;
+    std::vector<CornerContext> ctxs;
+    std::vector<Real> factors;
+    for (std::size_t q : group) {
+      const BaseComponent b = base_of(cs[q]);
+      ctxs.push_back({b.base, material.nu, std::numeric_limits<Real>::min(), dx * 1e-20L});
+      factors.push_back(b.sign * prefactor(b.base, material.nu, material.k) / Real(material.g));
+    }
+    CornerLattice lattice(ctxs, rule.x_mm, true);
+    using Rows = CornerLattice::Rows;
+    Rows lower(group.size(), std::vector<Real>(n)), upper = lower;
+    const auto integrate = [&](int j, Rows& g) {
+      const Rows& f = lattice.values((Real(j - my) + 0.5L) * dy + shift_y);
+      for (std::size_t k = 0; k < group.size(); ++k) {
+        Real carried = 0.0L;
+        for (std::size_t i = n; i-- > 0;) {
+          Real sum = 0.0L;
+          for (std::size_t m = rule.begin[i]; m < rule.begin[i + 1]; ++m)
+            sum += rule.weight[m] * f[k][m];
+          carried = sum + rule.carry[i] * carried;
+          g[k][i] = carried;
+        }
+      }
+    };
+    integrate(0, lower);
+    for (int j = 1; j < 2 * my; ++j) {
+      integrate(j, upper);
+      for (std::size_t k = 0; k < group.size(); ++k)
+        for (std::size_t i = 0; i + 1 < n; ++i)
+          kernels[group[k]].at(static_cast<int>(i) - (mx - 1), j - my) = static_cast<double>(
+              factors[k] * ((upper[k][i + 1] - upper[k][i]) - (lower[k][i + 1] - lower[k][i])));
+      lower.swap(upper);
+    }
+  }
+  return kernels;
+}
+
 Kernel make_unshared_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                             double shift_x, double shift_y) {
   check_grid(material, grid);
@@ -363,19 +440,23 @@ Kernel make_unshared_kernel(Component c, const Grid& grid, const CombinedMateria
 
 namespace {
 
-/// What make_kernel adds to the corner sums, and its check of the result.
-void finish_kernel(Component c, const Grid& grid, const CombinedMaterial& material, double shift_x,
-                   double shift_y, Kernel& kernel) {
-  add_layer_compliance(c, grid, material, shift_x, shift_y, kernel);
-  if (material.viscoelastic()) add_viscous_parts(c, grid, material, shift_x, shift_y, kernel);
+/// What make_kernels adds to the corner sums — an interfacial layer's compliance, the viscous
+/// parts of viscoelastic bodies (all components on one history lattice) —, and its check.
+void finish_kernels(const std::vector<Component>& cs, const Grid& grid,
+                    const CombinedMaterial& material, double shift_x, double shift_y,
+                    std::vector<Kernel>& kernels) {
+  for (std::size_t q = 0; q < cs.size(); ++q)
+    add_layer_compliance(cs[q], grid, material, shift_x, shift_y, kernels[q]);
+  if (material.viscoelastic()) add_viscous_parts(cs, grid, material, shift_x, shift_y, kernels);
   // Element sizes far outside what the closed forms can represent (e.g. DX = 1e30 mm) overflow
   // to inf or NaN: reject the grid here rather than report a NaN force later.
-  for (double v : kernel.data())
-    if (!std::isfinite(v)) {
-      throw GeometryError(
-          fmt::format("element size DX = {} mm, DY = {} mm overflows the influence coefficients",
-                      grid.dx, grid.dy));
-    }
+  for (const Kernel& kernel : kernels)
+    for (double v : kernel.data())
+      if (!std::isfinite(v)) {
+        throw GeometryError(
+            fmt::format("element size DX = {} mm, DY = {} mm overflows the influence coefficients",
+                        grid.dx, grid.dy));
+      }
 }
 
 }  // namespace
@@ -386,16 +467,13 @@ std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& g
   if (material.table) {
     std::vector<Kernel> out;
     out.reserve(cs.size());
-    for (Component c : cs) {
-      out.push_back(table_kernel(c, grid, material, shift_x, shift_y));
-      finish_kernel(c, grid, material, shift_x, shift_y, out.back());
-    }
+    for (Component c : cs) out.push_back(table_kernel(c, grid, material, shift_x, shift_y));
+    finish_kernels(cs, grid, material, shift_x, shift_y, out);
     return out;
   }
   if (material.elements == model::TractionElements::bilinear) {
     std::vector<Kernel> out = bilinear_kernels(cs, grid, material, shift_x, shift_y);
-    for (std::size_t q = 0; q < cs.size(); ++q)
-      finish_kernel(cs[q], grid, material, shift_x, shift_y, out[q]);
+    finish_kernels(cs, grid, material, shift_x, shift_y, out);
     return out;
   }
   const Real floor = Real(grid.dx) * 1e-10L;
@@ -414,8 +492,8 @@ std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& g
     else
       out.push_back(
           std::move(corner_sum_kernels({c}, grid, material, shift_x, shift_y, floor).front()));
-    finish_kernel(c, grid, material, shift_x, shift_y, out.back());
   }
+  finish_kernels(cs, grid, material, shift_x, shift_y, out);
   return out;
 }
 

@@ -79,6 +79,26 @@ std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& g
 Kernel make_continuous_kernel(Component c, const Grid& grid, const CombinedMaterial& material,
                               double shift_x = 0.0, double shift_y = 0.0);
 
+/// A linear rule along x that replaces the corner function F at each corner abscissa X_i of a
+/// kernel's corner lattice, X_i = (i − mx + ½)·dx + shift_x, i = 0 … 2mx−1, by
+///   G_i = Σ_{k ∈ [begin[i], begin[i+1])} weight[k]·F(x_mm[k], Y) + carry[i]·G_{i+1},
+/// evaluated from the last corner backwards (its carry is 0). For an integral over the
+/// observation point's history this is a recursion: G_i = ∫ over [X_i, X_{i+1}] + decay·G_{i+1}.
+struct CornerXRule {
+  std::vector<long double> x_mm;    ///< abscissae where F is evaluated [mm]
+  std::vector<long double> weight;  ///< one per abscissa [-]
+  std::vector<std::size_t> begin;   ///< 2mx + 1 offsets into x_mm
+  std::vector<long double> carry;   ///< 2mx factors [-]
+};
+
+/// make_continuous_kernel with every corner's F replaced by the rule's G (rows at the corner
+/// ordinates (j − my + ½)·dy + shift_y): the kernel of Σ_k weight_k·C at the shifted observation
+/// points the rule stands for, with F evaluated once per abscissa and row instead of once per
+/// abscissa and corner; nn, xx, yy and xy of one call share their logarithms.
+std::vector<Kernel> make_integrated_kernels(const std::vector<Component>& cs, const Grid& grid,
+                                            const CombinedMaterial& material, double shift_y,
+                                            const CornerXRule& rule);
+
 /// make_kernel's elastic corner sums with the corner function evaluated at every corner, nothing
 /// shared between mirrored corners: the reference that tests compare make_kernel with, bit for
 /// bit.

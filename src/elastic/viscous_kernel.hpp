@@ -9,7 +9,8 @@
 //   u(x) = C(x)·p/G_a + (FG_a/G_a)·∫₀^∞ e^{−σ} C(x + ℓσ)·p dσ,
 // i.e. the elastic coefficients plus a viscous part: the same corner-function sums at the
 // upstream-shifted observation point, weighted by e^{−σ}. The integral has no closed form and is
-// taken numerically (history_quadrature); the corner sums are the elastic make_kernel's.
+// taken numerically (history_corner_rule; history_quadrature is the per-node reference of the
+// tests); the corner sums are the elastic make_kernel's.
 
 #include <vector>
 
@@ -41,10 +42,24 @@ struct HistoryNode {
 std::vector<HistoryNode> history_quadrature(double ell_mm, double dx_mm, int mx, double shift_x_mm,
                                             int nodes = 10);
 
-/// Adds the viscous parts of `material` (CombinedMaterial::viscous) to `kernel`, which holds
-/// component c for the grid and observation shift (shift_x, shift_y) [mm] (divided by G). A part
-/// with ℓ = 0 (τ = 0: the body relaxes at once) adds weight·C exactly, without quadrature.
-void add_viscous_parts(Component c, const Grid& grid, const CombinedMaterial& material,
-                       double shift_x, double shift_y, Kernel& kernel);
+/// The same integral as a rule along x on the kernel's corner lattice (make_integrated_kernels):
+/// the history of corner X_i is the stretch to the next corner plus e^{−δx/ℓ} times the next
+/// corner's history, ∫₀^∞ e^{−s/ℓ}F(X_i + s) ds/ℓ = ∫_{X_i}^{X_{i+1}} … + e^{−δx/ℓ}·G_{i+1}, so
+/// that F is evaluated once per node and corner row — O(nodes·rows) — where history_quadrature's
+/// kernel per node costs O(nodes·corners). The corner function has its one kink at x = 0 (one
+/// element, not a lattice of kinks): stretches are split there and graded towards it, with the
+/// panel widths and node counts of history_quadrature; the last corner's history takes panels
+/// growing geometrically to 40ℓ. Agrees with history_quadrature's kernels to 1e-11 of the
+/// largest coefficient (test_viscous_kernel).
+CornerXRule history_corner_rule(double ell_mm, double dx_mm, int mx, double shift_x_mm,
+                                int nodes = 10);
+
+/// Adds the viscous parts of `material` (CombinedMaterial::viscous) to `kernels`, which hold
+/// components cs for the grid and observation shift (shift_x, shift_y) [mm] (divided by G), all
+/// on one history lattice (history_corner_rule, make_integrated_kernels). A part with ℓ = 0
+/// (τ = 0: the body relaxes at once) adds weight·C exactly, without quadrature.
+void add_viscous_parts(const std::vector<Component>& cs, const Grid& grid,
+                       const CombinedMaterial& material, double shift_x, double shift_y,
+                       std::vector<Kernel>& kernels);
 
 }  // namespace rollcontact::elastic
