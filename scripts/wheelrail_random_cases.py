@@ -23,6 +23,10 @@ With --wheel-flat it draws cases of CONTACT's wheel-flat example instead (the Ch
 258 slices on a 300 mm crowned rail, run with --unvalidated): lateral position -6..10 mm, yaw
 +-20 mrad, the wheel turned anywhere (-180..180 degrees), 1..300 kN or the height, DX 0.4 or 1 mm.
 
+With --viscoelastic every case has viscoelastic bodies (M = 1, exact theory, B = 0): creep
+ratios FG 0..2 per body and relaxation times giving relaxation lengths TC·|VS| of 0.01..20 mm
+(the same for both bodies or not); backwards rolling (χ = π) is CONTACT's error.
+
 With --sequences K it runs K random walks of --length cases each as one sequence (the lateral
 position wandering with jumps, yaw drifting, the load changing now and then, I = 0 or 1 at
 random) and every case of them again alone: steady rolling has no memory, so a case's answer
@@ -82,6 +86,17 @@ def draw(rng):
     return p
 
 
+def viscoelastic(rng, p):
+    """Makes a drawn case viscoelastic: M = 1 with the exact theory, FG1 FG2 TC1 TC2."""
+    p.update(B=0, M=1)
+    fg = [rng.uniform(0.0, 2.0), rng.uniform(0.0, 2.0)]
+    ell = [math.exp(rng.uniform(math.log(0.01), math.log(20.0))) for _ in range(2)]
+    if rng.random() < 0.5:
+        fg[1], ell[1] = fg[0], ell[0]
+    p["visc"] = fg + [e / abs(p["vs"]) for e in ell]
+    return p
+
+
 def wheel_flat_case(rng):
     """A case of CONTACT's wheel-flat example (`wheelflat.inp`'s first case, varied)."""
     head = (EXAMPLES / "wheelflat.inp").read_text().split("\n")[6:19]
@@ -118,6 +133,8 @@ def case_text(p):
     lines.append("  0.280   0.280   82000.  82000.             POISS 1,2, GG 1,2")
     if p["M"] == 3:
         lines.append("  1.000   1.000   1.000                      K0_MF, ALFAMF, BETAMF")
+    if p["M"] == 1:
+        lines.append("  {:.6g}  {:.6g}  {:.6g}  {:.6g}         FG1, FG2, TC1, TC2".format(*p["visc"]))
     lines += [f"  {p['dx']}   {p['dx']}   1.000   {p['asep']}   {p['dsep']}   {p['dcomb']}",
               f"   14.0     0    1435.0   {p['nomradr'] if p['C'] >= 4 else p['cant']:.5f}",
               f"  '{PROFILES[0]}'   0     1.0   0.0",
@@ -244,6 +261,8 @@ def main():
     ap.add_argument("--length", type=int, default=30, help="cases per sequence")
     ap.add_argument("--wheel-flat", action="store_true",
                     help="cases of CONTACT's wheel-flat example (wheel slices) instead")
+    ap.add_argument("--viscoelastic", action="store_true",
+                    help="viscoelastic bodies (M=1) in every case")
     args = ap.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     for name in PROFILES + ["r300_wide.prr", "S1002_flat.slcw"]:
@@ -260,6 +279,8 @@ def main():
             p, text = wheel_flat_case(rng)
         else:
             p = draw(rng)
+            if args.viscoelastic:
+                p = viscoelastic(rng, p)
             text = case_text(p)
         inp = args.out / f"case_{args.seed}_{k}.inp"
         inp.write_text(text)

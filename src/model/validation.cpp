@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -119,6 +120,14 @@ void friction_and_solver(const PatchProblem& p) {
       throw InvalidValueError("bodies.viscoelastic",
                               ": viscoelastic bodies need steady rolling (T=3)");
     positive("rolling.velocity_mm_per_s", p.rolling.velocity_mm_per_s);
+    // The history runs upstream along +x only: a patch rolling in another direction (a wheel
+    // rolling backwards has χ = π) was solved as if it rolled along +x. CONTACT refuses it too.
+    if (std::abs(std::remainder(p.rolling.direction_rad, 2.0 * std::numbers::pi)) > 1e-9)
+      throw InvalidValueError(
+          "rolling.direction_rad",
+          fmt::format(" = {:.6g} rad: viscoelastic bodies (M=1) roll along +x only (CHI = 0); a "
+                      "wheel rolling backwards is not supported",
+                      p.rolling.direction_rad));
   }
   if (p.friction.temperature_dependent()) {
     const TemperatureTerm& t = p.friction.temperature;

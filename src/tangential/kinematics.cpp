@@ -48,7 +48,7 @@ EffectiveKinematics effective_kinematics(const model::PatchProblem& problem, con
         std::abs(std::remainder(e.chi - std::numbers::pi, 2.0 * std::numbers::pi)) < 0.01;
     if (!near_zero && !near_pi) e.chi = 0.0;
   }
-  // Viscoelastic bodies relax along +x (spec-additions §B5): CONTACT rolls them with χ = 0 only.
+  // Viscoelastic bodies relax along +x (spec-additions §B5): model::validate refuses χ ≠ 0.
   if (kind == model::TangentialKind::SteadyRolling && problem.bodies.viscoelastic) e.chi = 0.0;
   e.dt = e.dq / e.veloc;
   return e;

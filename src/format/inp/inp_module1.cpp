@@ -374,8 +374,9 @@ void read_position_line(InpStream& in, const ControlDigits& d, WheelRailRecord& 
   mo.pitch = g.real(5);
 }
 
-/// Line 21 (E ≥ 2): wheelset velocities (F=1: the longitudinal force instead of VPITCH).
-void read_velocity_line(InpStream& in, const ControlDigits& d, WheelRailRecord& p) {
+/// Line 21 (E ≥ 2): wheelset velocities (F=1: the longitudinal force instead of VPITCH); returns
+/// the line of VS (RPITCH).
+int read_velocity_line(InpStream& in, const ControlDigits& d, WheelRailRecord& p) {
   WheelsetMotion& mo = p.motion;
   const bool roller = p.is_roller();
   const std::string_view q1 = roller ? "RPITCH" : "VS";
@@ -394,6 +395,20 @@ void read_velocity_line(InpStream& in, const ControlDigits& d, WheelRailRecord& 
   mo.vroll = g.real(3);
   mo.vyaw = g.real(4);
   (d.f == 1 ? mo.fx : d.f == 2 ? mo.my : mo.vpitch) = g.real(5);
+  return g.line(0);
+}
+
+/// Viscoelastic bodies relax along +x only (spec-additions §B5, module 3's CHI = 0): a wheelset
+/// rolling backwards on a track (VS < 0: χ = π in its patches) is refused, as module 3 refuses
+/// CHI = π, instead of being solved as if it rolled forwards. (Roller rigs and a VS that the
+/// wheel's rotation overrules are refused per patch, tangential/kinematics.cpp.)
+void check_viscoelastic_rolling(InpStream& in, const ControlDigits& d, const WheelRailRecord& p,
+                                int line) {
+  if (d.m == 1 && !p.is_roller() && p.motion.vs < 0.0) {
+    in.fail(line, fmt::format("M=1 (viscoelastic) requires rolling in +x (CHI = 0): VS = {:.6g} "
+                              "mm/s rolls the wheelset backwards",
+                              p.motion.vs));
+  }
 }
 
 /// Line 22 (E=4, 5): deviations of a flexible wheel and their rates.
@@ -485,7 +500,8 @@ WheelRailRecord Module1Reader::read_case(InpStream& in, int reid, int module_lin
     read_position_line(in, d, p);
     st.has_position = true;
   }
-  if (d.e >= 2) read_velocity_line(in, d, p);
+  const int velocity_line = d.e >= 2 ? read_velocity_line(in, d, p) : c.l2;
+  check_viscoelastic_rolling(in, d, p, velocity_line);
   if (d.e == 4 || d.e == 5) read_flexible_wheel(in, p);
 
   if (d.s >= 2) {  // line 23: subsurface points

@@ -135,6 +135,8 @@ constexpr MalformedCase kCases[] = {
     {"m1_nvf_not_increasing.inp", 9, "friction control points must be strictly increasing", false},
     {"m1_e0_n_changes.inp", 19, "E=0 (keep wheelset) while N changes from 1 to 0", false},
     {"m1_prfopt_bad_kinklow.inp", 12, "expected an angle for KINKLOW", false},
+    {"m1_viscoelastic_backwards.inp", 17,
+     "M=1 (viscoelastic) requires rolling in +x (CHI = 0): VS = -2000 mm/s", false},
 };
 
 // gtest prints the file name instead of the bytes of the struct.

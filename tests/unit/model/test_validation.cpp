@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -150,6 +151,23 @@ TEST(ModelValidation, TemperatureFrictionNeedsHeatAndTheExactTheory) {
   p.friction.temperature.temperature_span_C = 300.0;
   p.bodies.compliance = TangentialCompliance::FastsimThreeFlexibilities;
   EXPECT_EQ(rejected_field(p), "friction.law");
+}
+
+TEST(ModelValidation, ViscoelasticBodiesRollAlongPlusXOnly) {
+  // The relaxation history runs upstream along +x: a patch rolling backwards (χ = π, a wheel
+  // with VS < 0 or a roller rig turning backwards) was solved as if it rolled forwards.
+  PatchProblem p = valid_problem();
+  p.tangential.kind = TangentialKind::SteadyRolling;
+  p.rolling.velocity_mm_per_s = 2000.0;
+  p.bodies.viscoelastic = true;
+  p.bodies.viscous1 = p.bodies.viscous2 = {0.5, 1e-3};
+  EXPECT_EQ(rejected_field(p), "");
+  p.rolling.direction_rad = 2.0 * std::numbers::pi;  // the same direction
+  EXPECT_EQ(rejected_field(p), "");
+  p.rolling.direction_rad = std::numbers::pi;
+  EXPECT_EQ(rejected_field(p), "rolling.direction_rad");
+  p.bodies.viscoelastic = false;  // elastic bodies roll either way
+  EXPECT_EQ(rejected_field(p), "");
 }
 
 }  // namespace
