@@ -25,7 +25,8 @@ With --wheel-flat it draws cases of CONTACT's wheel-flat example instead (the Ch
 
 With --viscoelastic every case has viscoelastic bodies (M = 1, exact theory, B = 0): creep
 ratios FG 0..2 per body and relaxation times giving relaxation lengths TC·|VS| of 0.01..20 mm
-(the same for both bodies or not); backwards rolling (χ = π) is CONTACT's error.
+(the same for both bodies or not), always rolling forwards (backwards, χ = π, is refused: M=1
+relaxes along +x only).
 
 With --sequences K it runs K random walks of --length cases each as one sequence (the lateral
 position wandering with jumps, yaw drifting, the load changing now and then, I = 0 or 1 at
@@ -89,6 +90,10 @@ def draw(rng):
 def viscoelastic(rng, p):
     """Makes a drawn case viscoelastic: M = 1 with the exact theory, FG1 FG2 TC1 TC2."""
     p.update(B=0, M=1)
+    if p["vs"] < 0.0:  # backwards rolling is CONTACT's error for M=1 (CHI = 0 only): forwards
+        p.update(vs=-p["vs"], vpitch=-p["vpitch"])
+        if p["C"] >= 4:
+            p["rpitch"] = p["vs"] / p["nomradr"]
     fg = [rng.uniform(0.0, 2.0), rng.uniform(0.0, 2.0)]
     ell = [math.exp(rng.uniform(math.log(0.01), math.log(20.0))) for _ in range(2)]
     if rng.random() < 0.5:
