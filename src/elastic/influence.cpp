@@ -213,6 +213,20 @@ class CornerLattice {
     finish_row(y_high, high);
   }
 
+  /// values() at y_low = −y_high and y_high, which share r and L1 on a split lattice.
+  void values_pair(Real y_low, Real y_high, Rows& low, Rows& high) {
+    if (!split_) {
+      low = values(y_low);
+      high = values(y_high);
+      return;
+    }
+    radii_and_l1(y_high);
+    corner_values(y_low);
+    low = f_;
+    corner_values(y_high);
+    high = f_;
+  }
+
   /// F itself at every corner of the row at y, per component (not differenced).
   const Rows& values(Real y) {
     if (split_) {
@@ -403,9 +417,8 @@ std::vector<Kernel> make_integrated_kernels(const std::vector<Component>& cs, co
     }
     CornerLattice lattice(ctxs, rule.x_mm, true);
     using Rows = CornerLattice::Rows;
-    Rows lower(group.size(), std::vector<Real>(n)), upper = lower;
-    const auto integrate = [&](int j, Rows& g) {
-      const Rows& f = lattice.values((Real(j - my) + 0.5L) * dy + shift_y);
+    // G of a row from F at the rule's abscissae, corner by corner from the last.
+    const auto integrate = [&](const Rows& f, Rows& g) {
       for (std::size_t k = 0; k < group.size(); ++k) {
         Real carried = 0.0L;
         for (std::size_t i = n; i-- > 0;) {
@@ -417,14 +430,38 @@ std::vector<Kernel> make_integrated_kernels(const std::vector<Component>& cs, co
         }
       }
     };
-    integrate(0, lower);
-    for (int j = 1; j < 2 * my; ++j) {
-      integrate(j, upper);
+    const auto store = [&](int diy, const Rows& upper, const Rows& lower) {
       for (std::size_t k = 0; k < group.size(); ++k)
         for (std::size_t i = 0; i + 1 < n; ++i)
-          kernels[group[k]].at(static_cast<int>(i) - (mx - 1), j - my) = static_cast<double>(
+          kernels[group[k]].at(static_cast<int>(i) - (mx - 1), diy) = static_cast<double>(
               factors[k] * ((upper[k][i + 1] - upper[k][i]) - (lower[k][i + 1] - lower[k][i])));
+    };
+    const auto y = [&](int j) { return (Real(j - my) + 0.5L) * dy + shift_y; };
+    Rows f_low, f_high, lower(group.size(), std::vector<Real>(n)), upper = lower;
+    if (shift_y != 0.0 || !lattice.split()) {
+      integrate(lattice.values(y(0)), lower);
+      for (int j = 1; j < 2 * my; ++j) {
+        integrate(lattice.values(y(j)), upper);
+        store(j - my, upper, lower);
+        lower.swap(upper);
+      }
+      continue;
+    }
+    // Rows my−1−k and my+k are mirrored (r and L1 shared): outwards from the centre, as
+    // corner_sum_kernels does, bit for bit the rows one by one.
+    Rows lower_low = lower, upper_low = lower;
+    lattice.values_pair(y(my - 1), y(my), f_low, f_high);
+    integrate(f_low, lower_low);
+    integrate(f_high, lower);
+    store(0, lower, lower_low);
+    for (int k = 1; k < my; ++k) {
+      lattice.values_pair(y(my - 1 - k), y(my + k), f_low, f_high);
+      integrate(f_low, upper_low);
+      integrate(f_high, upper);
+      store(k, upper, lower);
+      store(-k, lower_low, upper_low);
       lower.swap(upper);
+      lower_low.swap(upper_low);
     }
   }
   return kernels;
