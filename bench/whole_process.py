@@ -11,7 +11,8 @@ plus x^2/(2*460 mm), approach prescribed, the scale-1 patch stretched by s = 1, 
     the first two sizes,
 the same problems the in-process benchmarks bench/normal_problem.cpp and
 bench/tangential_problem.cpp solve, and CONTACT's example inputs spence35, carter2d,
-catt_to_cart and tractcurv. Each file is run as a whole process,
+catt_to_cart, tractcurv, mbench_a22_varfric, wheelflat and visc_cylindr. Each file is run as a
+whole process,
 
     rollcontact run FILE -q --timing
 
@@ -59,9 +60,10 @@ CONTACT_PEAK_MB = {("normal", 3): 654.0}
 # others from the "Total" wall clock their .ref_out prints (carter2d prints 0.0: under 0.05 s).
 # mbench_a22_varfric has two conformal flange-root patches (D=4, cases 5 and 7); wheelflat is a
 # wheel-flat passage (258 wheel slices, 26 positions), run with --unvalidated (the default run
-# refuses wheel slices: docs/decisions.md, "Variable wheel profiles").
+# refuses wheel slices: docs/decisions.md, "Variable wheel profiles"); visc_cylindr is steady
+# rolling of viscoelastic cylinders (M=1: the history-integrated influence coefficients).
 EXAMPLE_CONTACT_SECONDS = {"spence35": 2.3, "carter2d": None, "catt_to_cart": 2.6, "tractcurv": 19.0,
-                           "mbench_a22_varfric": 3.2, "wheelflat": 22.3}
+                           "mbench_a22_varfric": 3.2, "wheelflat": 22.3, "visc_cylindr": 0.1}
 # Extra `rollcontact run` arguments per example input.
 EXAMPLE_FLAGS = {"wheelflat": ["--unvalidated"]}
 # Files an example reads besides its .inp (profiles, slices).
