@@ -301,6 +301,78 @@ class CornerLattice {
   Rows f_;
 };
 
+/// The terms of components `cs` on one corner lattice: their corner contexts, the factors
+/// sign·prefactor/G of their sums, and which of cs each is. Couplings of an uncoupled material
+/// have none (their kernels stay zero).
+struct LatticeTerms {
+  std::vector<CornerContext> ctxs;
+  std::vector<Real> factors;
+  std::vector<std::size_t> which;
+};
+
+LatticeTerms lattice_terms(const std::vector<Component>& cs, const CombinedMaterial& material,
+                           Real log_floor, Real dx) {
+  LatticeTerms t;
+  for (std::size_t q = 0; q < cs.size(); ++q) {
+    if (is_coupling(cs[q]) && !is_coupled(material)) continue;
+    const BaseComponent b = base_of(cs[q]);
+    t.ctxs.push_back({b.base, material.nu, log_floor, dx * 1e-20L});
+    t.factors.push_back(b.sign * prefactor(b.base, material.nu, material.k) / Real(material.g));
+    t.which.push_back(q);
+  }
+  return t;
+}
+
+/// The lattices the components of one call share, as indices into cs: nn, xx, yy and xy on one
+/// (their logarithms; first, possibly empty), each coupling on its own.
+std::vector<std::vector<std::size_t>> lattice_groups(const std::vector<Component>& cs) {
+  std::vector<std::vector<std::size_t>> groups(1);
+  for (std::size_t q = 0; q < cs.size(); ++q) {
+    if (CornerLattice::splits({base_of(cs[q]).base, 0.0L, 0.0L, 0.0L}))
+      groups.front().push_back(q);
+    else
+      groups.push_back({q});
+  }
+  return groups;
+}
+
+/// The corner ordinates (j − my + ½)·dy + shift_y, j = 0 … 2my−1 [mm].
+std::vector<Real> corner_ordinates(int my, Real dy, Real shift_y) {
+  std::vector<Real> ys(static_cast<std::size_t>(2 * my));
+  for (int j = 0; j < 2 * my; ++j)
+    ys[static_cast<std::size_t>(j)] = (Real(j - my) + 0.5L) * dy + shift_y;
+  return ys;
+}
+
+/// Walks the corner rows j = 0 … 2my−1 and hands store(diy, upper, lower) rows my+diy and
+/// my+diy−1 for every offset diy. row(j, out) makes row j. Where the rows are mirrored about
+/// y = 0 (no lateral shift), pair(j_low, j_high, low, high) makes rows my−1−k and my+k together,
+/// outwards from the centre (they share r and L1): the same values as row by row, bit for bit.
+template <class Row, class Pair, class Store>
+void walk_corner_rows(int my, bool mirrored, const CornerLattice::Rows& blank, Row&& row,
+                      Pair&& pair, Store&& store) {
+  CornerLattice::Rows prev = blank, cur = blank;
+  if (!mirrored) {
+    row(0, prev);
+    for (int j = 1; j < 2 * my; ++j) {
+      row(j, cur);
+      store(j - my, cur, prev);
+      prev.swap(cur);
+    }
+    return;
+  }
+  CornerLattice::Rows prev_low = blank, cur_low = blank;
+  pair(my - 1, my, prev_low, prev);
+  store(0, prev, prev_low);
+  for (int k = 1; k < my; ++k) {
+    pair(my - 1 - k, my + k, cur_low, cur);
+    store(k, cur, prev);
+    store(-k, prev_low, cur_low);
+    prev.swap(cur);
+    prev_low.swap(cur_low);
+  }
+}
+
 /// The corner sums of the components `cs` on the grid, divided by G, tabulated together on one
 /// corner lattice; `log_floor` [mm]: log terms whose argument lies below it count as 0.
 std::vector<Kernel> corner_sum_kernels(const std::vector<Component>& cs, const Grid& grid,
@@ -308,63 +380,37 @@ std::vector<Kernel> corner_sum_kernels(const std::vector<Component>& cs, const G
                                        double shift_y, Real log_floor, bool share = true) {
   const int mx = grid.mx, my = grid.my;
   std::vector<Kernel> kernels(cs.size(), Kernel(mx, my));
-  const Real dx = grid.dx, dy = grid.dy;
-  std::vector<CornerContext> ctxs;
-  std::vector<Real> factors;
-  std::vector<std::size_t> which;  // kernels[which[k]] gets lattice component k
-  for (std::size_t q = 0; q < cs.size(); ++q) {
-    if (is_coupling(cs[q]) && !is_coupled(material)) continue;  // stays zero
-    const BaseComponent b = base_of(cs[q]);
-    ctxs.push_back({b.base, material.nu, log_floor, dx * 1e-20L});
-    factors.push_back(b.sign * prefactor(b.base, material.nu, material.k) / Real(material.g));
-    which.push_back(q);
-  }
-  if (ctxs.empty()) return kernels;
+  const LatticeTerms terms = lattice_terms(cs, material, log_floor, grid.dx);
+  if (terms.ctxs.empty()) return kernels;
 
   // Neighbouring offsets share corners: F is tabulated once per corner instead of four times.
   // Corner i in x sits at X_i = (i − mx + ½)·dx + shift_x, i = 0 … 2mx−1; offset dix has
   // X₋ = X_{dix+mx−1} and X₊ = X_{dix+mx} (likewise in y). Offset diy is the difference of the
   // x-differences of corner rows my+diy and my+diy−1.
   const int ncx = 2 * mx;
-  std::vector<Real> xs(static_cast<std::size_t>(ncx)), ys(static_cast<std::size_t>(2 * my));
+  std::vector<Real> xs(static_cast<std::size_t>(ncx));
   for (int i = 0; i < ncx; ++i)
-    xs[static_cast<std::size_t>(i)] = (Real(i - mx) + 0.5L) * dx + shift_x;
-  for (int j = 0; j < 2 * my; ++j)
-    ys[static_cast<std::size_t>(j)] = (Real(j - my) + 0.5L) * dy + shift_y;
-  CornerLattice lattice(ctxs, xs, share);
+    xs[static_cast<std::size_t>(i)] = (Real(i - mx) + 0.5L) * Real(grid.dx) + shift_x;
+  const std::vector<Real> ys = corner_ordinates(my, grid.dy, shift_y);
+  CornerLattice lattice(terms.ctxs, xs, share);
   using Rows = CornerLattice::Rows;
   const auto store = [&](int diy, const Rows& upper, const Rows& lower) {
-    for (std::size_t k = 0; k < ctxs.size(); ++k) {
-      Kernel& kernel = kernels[which[k]];
+    for (std::size_t k = 0; k < terms.ctxs.size(); ++k) {
+      Kernel& kernel = kernels[terms.which[k]];
       for (int i = 0; i + 1 < ncx; ++i) {
         const std::size_t s = static_cast<std::size_t>(i);
         kernel.at(i - (mx - 1), diy) =
-            static_cast<double>(factors[k] * (upper[k][s] - lower[k][s]));
+            static_cast<double>(terms.factors[k] * (upper[k][s] - lower[k][s]));
       }
     }
   };
   const auto y = [&](int j) { return ys[static_cast<std::size_t>(j)]; };
-  Rows prev(ctxs.size(), std::vector<Real>(static_cast<std::size_t>(ncx - 1))), cur = prev;
-  if (!lattice.split() || !CornerLattice::mirrored(ys)) {
-    lattice.row(y(0), prev);
-    for (int j = 1; j < 2 * my; ++j) {
-      lattice.row(y(j), cur);
-      store(j - my, cur, prev);
-      prev.swap(cur);
-    }
-    return kernels;
-  }
-  // Mirrored rows my−1−k and my+k together, outwards from the centre: offsets ±k.
-  Rows prev_low = prev, cur_low = prev;
-  lattice.row_pair(y(my - 1), y(my), prev_low, prev);
-  store(0, prev, prev_low);
-  for (int k = 1; k < my; ++k) {
-    lattice.row_pair(y(my - 1 - k), y(my + k), cur_low, cur);
-    store(k, cur, prev);
-    store(-k, prev_low, cur_low);
-    prev.swap(cur);
-    prev_low.swap(cur_low);
-  }
+  walk_corner_rows(
+      my, lattice.split() && CornerLattice::mirrored(ys),
+      Rows(terms.ctxs.size(), std::vector<Real>(static_cast<std::size_t>(ncx - 1))),
+      [&](int j, Rows& out) { lattice.row(y(j), out); },
+      [&](int jl, int jh, Rows& low, Rows& high) { lattice.row_pair(y(jl), y(jh), low, high); },
+      store);
   return kernels;
 }
 
@@ -389,37 +435,26 @@ std::vector<Kernel> make_integrated_kernels(const std::vector<Component>& cs, co
                                             const CombinedMaterial& material, double shift_y,
                                             const CornerXRule& rule) {
   check_grid(material, grid);
-  const int mx = grid.mx, my = grid.my, ncx = 2 * mx;
+  const int mx = grid.mx, my = grid.my;
   std::vector<Kernel> kernels(cs.size(), Kernel(mx, my));
-  const auto n = static_cast<std::size_t>(ncx);
+  const auto n = static_cast<std::size_t>(2 * mx);
   if (rule.begin.size() != n + 1 || rule.carry.size() != n ||
       rule.begin.back() > rule.x_mm.size() || rule.weight.size() != rule.x_mm.size())
     throw std::logic_error("make_integrated_kernels: the rule does not fit the grid's corners");
-  const Real dx = grid.dx, dy = grid.dy;
-  // Continuous in x (no log guard), as the history integrals need (make_continuous_kernel).
-  // nn, xx, yy and xy share one lattice (their logarithms); the couplings take one each.
-  std::vector<std::vector<std::size_t>> groups(1);
-  for (std::size_t q = 0; q < cs.size(); ++q) {
-    if (is_coupling(cs[q]) && !is_coupled(material)) continue;  // stays zero
-    if (CornerLattice::splits({base_of(cs[q]).base, 0.0L, 0.0L, 0.0L}))
-      groups.front().push_back(q);
-    else
-      groups.push_back({q});
-  }
-  for (const std::vector<std::size_t>& group : groups) {
-    if (group.empty()) continue;
-    std::vector<CornerContext> ctxs;
-    std::vector<Real> factors;
-    for (std::size_t q : group) {
-      const BaseComponent b = base_of(cs[q]);
-      ctxs.push_back({b.base, material.nu, std::numeric_limits<Real>::min(), dx * 1e-20L});
-      factors.push_back(b.sign * prefactor(b.base, material.nu, material.k) / Real(material.g));
-    }
-    CornerLattice lattice(ctxs, rule.x_mm, true);
+  const std::vector<Real> ys = corner_ordinates(my, grid.dy, shift_y);
+  const auto y = [&](int j) { return ys[static_cast<std::size_t>(j)]; };
+  for (const std::vector<std::size_t>& group : lattice_groups(cs)) {
+    std::vector<Component> members;
+    for (std::size_t q : group) members.push_back(cs[q]);
+    // Continuous in x (no log guard), as the history integrals need (make_continuous_kernel).
+    const LatticeTerms terms =
+        lattice_terms(members, material, std::numeric_limits<Real>::min(), grid.dx);
+    if (terms.ctxs.empty()) continue;
+    CornerLattice lattice(terms.ctxs, rule.x_mm, true);
     using Rows = CornerLattice::Rows;
     // G of a row from F at the rule's abscissae, corner by corner from the last.
     const auto integrate = [&](const Rows& f, Rows& g) {
-      for (std::size_t k = 0; k < group.size(); ++k) {
+      for (std::size_t k = 0; k < terms.ctxs.size(); ++k) {
         Real carried = 0.0L;
         for (std::size_t i = n; i-- > 0;) {
           Real sum = 0.0L;
@@ -431,38 +466,23 @@ std::vector<Kernel> make_integrated_kernels(const std::vector<Component>& cs, co
       }
     };
     const auto store = [&](int diy, const Rows& upper, const Rows& lower) {
-      for (std::size_t k = 0; k < group.size(); ++k)
+      for (std::size_t k = 0; k < terms.ctxs.size(); ++k)
         for (std::size_t i = 0; i + 1 < n; ++i)
-          kernels[group[k]].at(static_cast<int>(i) - (mx - 1), diy) = static_cast<double>(
-              factors[k] * ((upper[k][i + 1] - upper[k][i]) - (lower[k][i + 1] - lower[k][i])));
+          kernels[group[terms.which[k]]].at(static_cast<int>(i) - (mx - 1), diy) =
+              static_cast<double>(terms.factors[k] * ((upper[k][i + 1] - upper[k][i]) -
+                                                      (lower[k][i + 1] - lower[k][i])));
     };
-    const auto y = [&](int j) { return (Real(j - my) + 0.5L) * dy + shift_y; };
-    Rows f_low, f_high, lower(group.size(), std::vector<Real>(n)), upper = lower;
-    if (shift_y != 0.0 || !lattice.split()) {
-      integrate(lattice.values(y(0)), lower);
-      for (int j = 1; j < 2 * my; ++j) {
-        integrate(lattice.values(y(j)), upper);
-        store(j - my, upper, lower);
-        lower.swap(upper);
-      }
-      continue;
-    }
-    // Rows my−1−k and my+k are mirrored (r and L1 shared): outwards from the centre, as
-    // corner_sum_kernels does, bit for bit the rows one by one.
-    Rows lower_low = lower, upper_low = lower;
-    lattice.values_pair(y(my - 1), y(my), f_low, f_high);
-    integrate(f_low, lower_low);
-    integrate(f_high, lower);
-    store(0, lower, lower_low);
-    for (int k = 1; k < my; ++k) {
-      lattice.values_pair(y(my - 1 - k), y(my + k), f_low, f_high);
-      integrate(f_low, upper_low);
-      integrate(f_high, upper);
-      store(k, upper, lower);
-      store(-k, lower_low, upper_low);
-      lower.swap(upper);
-      lower_low.swap(upper_low);
-    }
+    Rows f_low, f_high;
+    walk_corner_rows(
+        my, lattice.split() && CornerLattice::mirrored(ys),
+        Rows(terms.ctxs.size(), std::vector<Real>(n)),
+        [&](int j, Rows& out) { integrate(lattice.values(y(j)), out); },
+        [&](int jl, int jh, Rows& low, Rows& high) {
+          lattice.values_pair(y(jl), y(jh), f_low, f_high);
+          integrate(f_low, low);
+          integrate(f_high, high);
+        },
+        store);
   }
   return kernels;
 }
@@ -514,21 +534,13 @@ std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& g
     return out;
   }
   const Real floor = Real(grid.dx) * 1e-10L;
-  // nn, xx, yy and xy on one lattice (shared logarithms); the couplings one by one.
-  std::vector<Component> shared;
-  for (Component c : cs)
-    if (CornerLattice::splits({base_of(c).base, 0.0L, 0.0L, 0.0L})) shared.push_back(c);
-  std::vector<Kernel> together =
-      corner_sum_kernels(shared, grid, material, shift_x, shift_y, floor);
-  std::vector<Kernel> out;
-  out.reserve(cs.size());
-  std::size_t next = 0;
-  for (Component c : cs) {
-    if (CornerLattice::splits({base_of(c).base, 0.0L, 0.0L, 0.0L}))
-      out.push_back(std::move(together[next++]));
-    else
-      out.push_back(
-          std::move(corner_sum_kernels({c}, grid, material, shift_x, shift_y, floor).front()));
+  std::vector<Kernel> out(cs.size(), Kernel(grid.mx, grid.my));
+  for (const std::vector<std::size_t>& group : lattice_groups(cs)) {
+    std::vector<Component> members;
+    for (std::size_t q : group) members.push_back(cs[q]);
+    std::vector<Kernel> kernels =
+        corner_sum_kernels(members, grid, material, shift_x, shift_y, floor);
+    for (std::size_t k = 0; k < group.size(); ++k) out[group[k]] = std::move(kernels[k]);
   }
   finish_kernels(cs, grid, material, shift_x, shift_y, out);
   return out;

@@ -9,8 +9,8 @@
 //   u(x) = C(x)·p/G_a + (FG_a/G_a)·∫₀^∞ e^{−σ} C(x + ℓσ)·p dσ,
 // i.e. the elastic coefficients plus a viscous part: the same corner-function sums at the
 // upstream-shifted observation point, weighted by e^{−σ}. The integral has no closed form and is
-// taken numerically (history_corner_rule; history_quadrature is the per-node reference of the
-// tests); the corner sums are the elastic make_kernel's.
+// taken numerically along the corner lattice (history_corner_rule); the corner sums are the
+// elastic make_kernel's.
 
 #include <vector>
 
@@ -18,39 +18,19 @@
 
 namespace rollcontact::elastic {
 
-/// One node of a rule ∫₀^∞ e^{−s/ℓ} f(s) ds/ℓ ≈ Σ weight·f(s_mm).
-struct HistoryNode {
-  double s_mm;    ///< upstream distance of the observation point [mm]
-  double weight;  ///< includes e^{−s/ℓ}/ℓ and the panel's Jacobian [1/mm · mm = -]
-};
-
-/// Nodes for the relaxation integral of a kernel on mx elements of length dx [mm] whose
-/// observation points are already moved by shift_x [mm], relaxation length ell [mm] > 0.
-///
-/// Quadrature: the integrand is the kernel at observation offset dix·dx + shift_x + s, whose
-/// corner functions have x·log|x| kinks where a corner abscissa passes zero, i.e. at
-/// s = (j + ½)dx − shift_x (the same lattice for every offset), and is analytic in between; beyond
-/// the last kink it is analytic and slowly varying (log or 1/r decay on the scale of the distance
-/// travelled). The range [0, 40ℓ] (e^{−40} < 5e−18) is split at the kinks, each stretch between
-/// two kinks into panels of at most half an element and ℓ/4, then into panels growing
-/// geometrically with the distance from the last kink, at most ℓ long. Each panel gets `nodes`
-/// Gauss–Legendre points, after the substitution s = a + (b−a)·u³ (or its mirror) at a kink end:
-/// the Jacobian 3u² turns t·log t into u⁵·log u. The kernels at the nodes are the continuous
-/// corner sums (make_continuous_kernel). Measured (test_viscous_kernel) on the visc_cylindr strip
-/// and a 3-D grid: 10 nodes agree with 16 to 3e-12 of the largest coefficient, and with a brute
-/// force rule (uniform 4 µm panels) to its own error, 2e-12.
-std::vector<HistoryNode> history_quadrature(double ell_mm, double dx_mm, int mx, double shift_x_mm,
-                                            int nodes = 10);
-
-/// The same integral as a rule along x on the kernel's corner lattice (make_integrated_kernels):
+/// The relaxation integral of a kernel on mx elements of length dx [mm] whose observation points
+/// are already moved by shift_x [mm], relaxation length ell [mm] > 0, as a rule along x on the
+/// kernel's corner lattice (make_integrated_kernels):
 /// the history of corner X_i is the stretch to the next corner plus e^{−δx/ℓ} times the next
 /// corner's history, ∫₀^∞ e^{−s/ℓ}F(X_i + s) ds/ℓ = ∫_{X_i}^{X_{i+1}} … + e^{−δx/ℓ}·G_{i+1}, so
-/// that F is evaluated once per node and corner row — O(nodes·rows) — where history_quadrature's
-/// kernel per node costs O(nodes·corners). The corner function has its one kink at x = 0 (one
-/// element, not a lattice of kinks): stretches are split there and graded towards it, with the
-/// panel widths and node counts of history_quadrature; the last corner's history takes panels
-/// growing geometrically to 40ℓ. Agrees with history_quadrature's kernels to 1e-11 of the
-/// largest coefficient (test_viscous_kernel).
+/// that F is evaluated once per node and corner row — O(nodes·rows) — where a whole
+/// kernel per node costs O(nodes·corners). The corner function has its one kink at x = 0, an
+/// x·log|x| (or x·atan) kink: stretches are split there, refined towards it geometrically and
+/// graded by t = a + h·u³ in the innermost panel (the Jacobian 3u² turns t·log t into
+/// u⁵·log u); panels span at most ℓ, or min(ℓ/4, δx/2) at the kink, with 10 Gauss–Legendre
+/// nodes (6 or 4 far from the kink); the last corner's history takes panels growing
+/// geometrically to 40ℓ (e^{−40} < 5e−18). Agrees with a kernel per history node (16 nodes
+/// per panel) to 7.5e-13 of the largest coefficient (test_viscous_kernel).
 CornerXRule history_corner_rule(double ell_mm, double dx_mm, int mx, double shift_x_mm,
                                 int nodes = 10);
 

@@ -13,9 +13,13 @@
 #include "elastic/kernel_library.hpp"
 #include "elastic/material.hpp"
 #include "elastic/viscous_kernel.hpp"
+#include "unit/elastic/history_quadrature.hpp"
 
 namespace rollcontact::elastic {
 namespace {
+
+using reference::history_quadrature;
+using reference::HistoryNode;
 
 /// Identical bodies with glassy G = 1143 N/mm², ν = 0.4 (visc_cylindr's PA6) and one merged
 /// viscous part of weight FG and relaxation length ℓ.
@@ -38,7 +42,44 @@ double max_difference(const Kernel& a, const Kernel& b) {
   return m;
 }
 
+/// The corner rule's history G_i of every corner for the function f of x (the recursion of
+/// make_integrated_kernels).
+template <class F>
+std::vector<long double> corner_histories(const CornerXRule& rule, F f) {
+  const std::size_t n = rule.carry.size();
+  std::vector<long double> g(n);
+  for (std::size_t i = n; i-- > 0;) {
+    long double sum = 0.0L;
+    for (std::size_t k = rule.begin[i]; k < rule.begin[i + 1]; ++k)
+      sum += rule.weight[k] * f(rule.x_mm[k]);
+    g[i] = sum + (i + 1 < n ? rule.carry[i] * g[i + 1] : 0.0L);
+  }
+  return g;
+}
+
+TEST(HistoryCornerRule, IntegratesTheRelaxationWeightExactly) {
+  // Every corner's history of f = 1 is ∫₀^∞ e^{−s/ℓ} ds/ℓ = 1, of f(x) = x it is X + ℓ; for ℓ
+  // below, near and far above the element size and the grid length (visc_cylindr's 0.16 mm ×
+  // 99), with the kink between corners and on one.
+  const int mx = 99;
+  for (double shift_x : {0.16, -0.08})
+    for (double ell : {0.01, 0.16, 9.0, 45.0, 2000.0}) {
+      const CornerXRule rule = history_corner_rule(ell, 0.16, mx, shift_x);
+      const auto g0 = corner_histories(rule, [](long double) { return 1.0L; });
+      const auto g1 = corner_histories(rule, [](long double x) { return x; });
+      for (int i = 0; i < 2 * mx; ++i) {
+        const double x = (i - mx + 0.5) * 0.16 + shift_x;
+        EXPECT_NEAR(static_cast<double>(g0[static_cast<std::size_t>(i)]), 1.0, 1e-13)
+            << "ell " << ell << " corner " << i;
+        EXPECT_NEAR(static_cast<double>(g1[static_cast<std::size_t>(i)]), x + ell,
+                    1e-12 * (std::abs(x) + ell))
+            << "ell " << ell << " corner " << i;
+      }
+    }
+}
+
 TEST(HistoryQuadrature, IntegratesTheRelaxationWeightExactly) {
+  // The tests' per-node reference likewise.
   // ∫₀^∞ e^{−s/ℓ} ds/ℓ = 1 and ∫₀^∞ s e^{−s/ℓ} ds/ℓ = ℓ, for ℓ below, near and far above the
   // element size and the grid length (0.16 mm × 99 elements: visc_cylindr).
   for (double ell : {0.01, 0.16, 9.0, 45.0, 2000.0}) {
@@ -141,16 +182,8 @@ TEST(HistoryCornerRule, IntegratesTheKinkOfTheCornerFunction) {
   for (double shift_x : {-0.5, -0.5 + 1e-9, 0.37})
     for (double ell : {0.03, 0.7, 9.0}) {
       const CornerXRule rule = history_corner_rule(ell, dx, mx, shift_x);
-      std::vector<long double> g(2 * mx);
-      for (int i = 2 * mx - 1; i >= 0; --i) {
-        long double sum = 0.0L;
-        const auto u = static_cast<std::size_t>(i);
-        for (std::size_t k = rule.begin[u]; k < rule.begin[u + 1]; ++k) {
-          const long double t = rule.x_mm[k];
-          sum += rule.weight[k] * (t == 0.0L ? 0.0L : t * std::log(std::abs(t)));
-        }
-        g[u] = sum + (i + 1 < 2 * mx ? rule.carry[u] * g[u + 1] : 0.0L);
-      }
+      const auto g = corner_histories(
+          rule, [](long double t) { return t == 0.0L ? 0.0L : t * std::log(std::abs(t)); });
       for (int i = 0; i < 2 * mx; ++i) {
         const double x = (i - mx + 0.5) * dx + shift_x;
         if (!(x > 0.0)) continue;
