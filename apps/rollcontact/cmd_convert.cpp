@@ -34,6 +34,16 @@ int report(const ConvertSettings& s, const std::filesystem::path& in,
            const std::filesystem::path& out, std::size_t count,
            const std::vector<format::CaseRecord>& problems);
 
+/// The case records whose warnings report() prints (a wheel/rail case's identity record).
+std::vector<format::CaseRecord> identities_of(const std::vector<format::InputCase>& cases) {
+  std::vector<format::CaseRecord> identities;
+  for (const auto& c : cases)
+    identities.push_back(std::holds_alternative<format::CaseRecord>(c)
+                             ? std::get<format::CaseRecord>(c)
+                             : format::identity_record(std::get<format::WheelRailRecord>(c)));
+  return identities;
+}
+
 int convert(const ConvertSettings& s) {
   const std::filesystem::path in(s.input);
   const std::filesystem::path out(s.output);
@@ -43,19 +53,15 @@ int convert(const ConvertSettings& s) {
                      "case.toml, or convert case.toml case.inp)");
   }
   if (!is_toml(out)) {
-    // TOML -> .inp: module-3 cases (the .inp writer has no module 1 yet).
-    const std::vector<format::CaseRecord> problems = format::read_toml_file(in);
-    format::write_inp_file(out, problems);
-    return report(s, in, out, problems.size(), problems);
+    // TOML -> .inp: module-3 and wheel/rail cases (profiles given as points become tables
+    // beside the .inp file).
+    const std::vector<format::InputCase> cases = format::read_toml_input_file(in);
+    format::write_inp_input_file(out, cases);
+    return report(s, in, out, cases.size(), identities_of(cases));
   }
   const std::vector<format::InputCase> cases = batch::read_input_file(in);
   format::write_toml_input_file(out, cases);
-  std::vector<format::CaseRecord> identities;
-  for (const auto& c : cases)
-    identities.push_back(std::holds_alternative<format::CaseRecord>(c)
-                             ? std::get<format::CaseRecord>(c)
-                             : format::identity_record(std::get<format::WheelRailRecord>(c)));
-  return report(s, in, out, cases.size(), identities);
+  return report(s, in, out, cases.size(), identities_of(cases));
 }
 
 int report(const ConvertSettings& s, const std::filesystem::path& in,

@@ -99,13 +99,6 @@ int clamp_npot_max(std::optional<int> given, std::vector<std::string>& warnings)
   return npot;
 }
 
-bool is_slices_extension(const std::filesystem::path& p, bool wheel) {
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == (wheel ? ".slcw" : ".slcs");
-}
-
 /// The case being read: the stream, the record, the stored state of its result element, the
 /// digits of the previous case and the lines of the control words.
 struct CaseContext {
@@ -577,7 +570,7 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
                               path.string()));
   }
   const ProfileFormat format = profile_format_of(path);
-  if (format == ProfileFormat::Slices && !is_slices_extension(path, is_wheel)) {
+  if (format == ProfileFormat::Slices && !has_slices_extension(path, is_wheel)) {
     in.fail(line,
             fmt::format("a {} profile needs a {} slices file", body, is_wheel ? ".slcw" : ".slcs"),
             ps.file);

@@ -6,6 +6,7 @@
 #include <span>
 #include <string_view>
 
+#include "format/inp/inp_line_writer.hpp"
 #include "format/text/atomic_file.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -13,68 +14,30 @@ namespace rollcontact::format {
 
 namespace {
 
-/// Shortest text that reads back to exactly `v` (the .inp reader converts with from_chars).
-std::string real(double v) {
-  if (!std::isfinite(v))
-    throw Error(fmt::format("cannot write the non-finite value {} to .inp", v));
-  std::string s = fmt::format("{}", v);
-  if (s.find_first_of(".e") == std::string::npos) s += ".";
-  return s;
-}
-
 /// Writes one case in the line order of spec/inp-format.md §4.
-class CaseWriter {
+class CaseWriter : InpLineWriter {
  public:
   CaseWriter(std::string& out, const CaseRecord& p, const std::filesystem::path& base_dir)
-      : out_(out), p_(p), base_dir_(base_dir) {}
+      : InpLineWriter(out, p.case_number), p_(p), base_dir_(base_dir) {}
 
   void write() {
     control_words();
-    solver_lines();
+    solver_lines(p_.solver);
     load_line();
     if (p_.digits.v == 0) friction_lines();
     rolling_line();
     influence_lines();
-    material_lines();
-    damping_line();
-    heat_lines();
+    material_lines(p_.materials, p_.digits.b, p_.digits.m);
+    damping_line(p_.damping);
+    if (p_.digits.h != 0) heat_lines(p_.heat, p_.digits.m);
     potential_contact();
     geometry();
     if (p_.digits.v == 3) friction_rows();
     extra_slip();
-    subsurface();
+    if (p_.digits.s != 0) subsurface(p_.subsurface);
   }
 
  private:
-  /// One group: values then a `%` comment naming them (labels never reach optional fields).
-  void group(const std::string& values, std::string_view names) {
-    out_ += fmt::format("  {:<40} % {}\n", values, names);
-  }
-  /// An array, six values per line (the reader takes up to 50 words per line).
-  void array(std::span<const double> v, std::string_view names) {
-    out_ += fmt::format("  % {}\n", names);
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      out_ += (k % 6 == 0 ? "  " : " ") + real(v[k]);
-      if (k % 6 == 5 || k + 1 == v.size()) out_ += "\n";
-    }
-  }
-  void int_array(std::span<const int> v) {
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      out_ += fmt::format("{}{}", k % 10 == 0 ? "  " : " ", v[k]);
-      if (k % 10 == 9 || k + 1 == v.size()) out_ += "\n";
-    }
-  }
-  static std::string reals(std::initializer_list<double> v) {
-    std::string s;
-    for (double x : v) s += (s.empty() ? "" : " ") + real(x);
-    return s;
-  }
-
-  bool has_memory() const {
-    const int law = p_.friction.law;
-    return law == 2 || law == 3 || law == 4 || law == 6;
-  }
-
   void control_words() {
     const ControlDigits& d = p_.digits;
     const int s = d.s >= 1 ? 3 : 0;
@@ -99,23 +62,6 @@ class CaseWriter {
     }
   }
 
-  void solver_lines() {
-    const SolverSettings& s = p_.solver;
-    group(fmt::format("{} {} {} {} {}", s.maxgs, s.maxin, s.maxnr, s.maxout, real(s.eps)),
-          "MAXGS MAXIN MAXNR MAXOUT EPS");
-    if (s.method == 2 || s.method == 3) {
-      group(fmt::format("{} {} {} {}", real(s.omega_h), real(s.omega_s), s.inislp, real(s.omgslp)),
-            "OMEGAH OMEGAS INISLP OMGSLP");
-    } else if (s.method == 4) {
-      group(fmt::format("{} {}", s.inislp, real(s.omgslp)), "INISLP OMGSLP");
-    } else if (s.method == 5) {
-      const auto& g = s.gd;
-      group(fmt::format("{} {} {} {} {} {} {} {}", real(g.fdecay), real(g.betath), g.kdowfb,
-                        real(g.d_ifc), real(g.d_lin), real(g.d_cns), real(g.d_slp), real(g.pow_s)),
-            "FDECAY BETATH KDOWFB D_IFC D_LIN D_CNS D_SLP POW_S");
-    }
-  }
-
   void load_line() {
     const ControlDigits& d = p_.digits;
     const Kinematics& k = p_.kinematics;
@@ -127,42 +73,15 @@ class CaseWriter {
                       d.f >= 1 ? "FX" : "CKSI", d.f == 2 ? "FY" : "CETA"));
   }
 
-  void friction_values(double fstat, double fkin, const std::array<double, 4>& q) {
-    switch (p_.friction.law) {
-      case 0:
-        group(reals({fstat, fkin}), "FSTAT FKIN");
-        break;
-      case 2:
-        group(reals({fkin, q[0], q[1], q[2], q[3]}), "FKIN FLIN1 SABSH1 FLIN2 SABSH2");
-        break;
-      case 3:
-        group(reals({fkin, q[0], q[1], q[2], q[3]}), "FKIN FRAT1 SABSH1 FRAT2 SABSH2");
-        break;
-      case 4:
-        group(reals({fkin, q[0], q[1], q[2], q[3]}), "FKIN FEXP1 SABSH1 FEXP2 SABSH2");
-        break;
-      case 6:
-        group(reals({fkin, q[0], q[1], q[2]}), "FREF TREF DFHEAT DTHEAT");
-        break;
-      default:
-        throw Error(fmt::format("case {}: friction law L={} cannot be written to .inp",
-                                p_.case_number, p_.friction.law));
-    }
-  }
-
-  void friction_memory() {
-    if (has_memory()) group(reals({p_.friction.memdst, p_.friction.mem_s0}), "MEMDST MEM_S0");
-  }
-
   void friction_lines() {
     const Friction& f = p_.friction;
-    friction_values(f.fstat, f.fkin, f.params);
-    friction_memory();
+    friction_values(f.law, FrictionValues{f.fstat, f.fkin, f.params});
+    friction_memory(f);
   }
 
   void friction_rows() {
-    for (const FrictionValues& r : p_.friction.rows) friction_values(r.fstat, r.fkin, r.params);
-    friction_memory();
+    for (const FrictionValues& r : p_.friction.rows) friction_values(p_.friction.law, r);
+    friction_memory(p_.friction);
   }
 
   void rolling_line() {
@@ -193,44 +112,6 @@ class CaseWriter {
       }
       group(fmt::format("'{}'", name), "CFNAME");
     }
-  }
-
-  void material_lines() {
-    const Materials& m = p_.materials;
-    const auto& q = m.model_params;
-    group(reals({m.poiss1, m.poiss2, m.gg1, m.gg2}), "POISS1 POISS2 GG1 GG2");
-    if (p_.digits.b == 1) group(real(m.flxz), "FLXZ");
-    switch (p_.digits.m) {
-      case 1:
-        group(reals({q[0], q[1], q[2], q[3]}), "FG1 FG2 TC1 TC2");
-        break;
-      case 2:
-        group(reals({q[0], q[1], q[2], q[3]}), "FLX K0_MF ALFAMF BETAMF");
-        break;
-      case 3:
-      case 5:
-        group(reals({q[0], q[1], q[2]}), "K0_MF ALFAMF BETAMF");
-        break;
-      case 4:
-        group(reals({q[0], q[1], q[2], q[3]}), "GG3 LAYTHK TAU_C0 K_TAU");
-        break;
-      default:
-        break;
-    }
-  }
-
-  void damping_line() {
-    const Damping& d = p_.damping;
-    if (d.enabled)
-      group(reals({d.cdampn, d.cdampt, d.dfnmax, d.dftmax}), "CDAMPN CDAMPT DFNMAX DFTMAX");
-  }
-
-  void heat_lines() {
-    if (p_.digits.h == 0) return;
-    const HeatParameters& h = p_.heat;
-    group(reals({h.bktemp1, h.heatcp1, h.lambda1, h.dens1}), "BKTEMP1 HEATCP1 LAMBDA1 DENS1");
-    group(reals({h.bktemp2, h.heatcp2, h.lambda2, h.dens2}), "BKTEMP2 HEATCP2 LAMBDA2 DENS2");
-    if (p_.digits.m == 4) group(real(h.betapl), "BETAPL");
   }
 
   void potential_contact() {
@@ -294,56 +175,48 @@ class CaseWriter {
       array(p_.kinematics.extra_slip, "extra rigid slip wx(1) wy(1) wx(2) wy(2) ...");
   }
 
-  void subsurface() {
-    if (p_.digits.s == 0) return;
-    const Subsurface& s = p_.subsurface;
-    group(fmt::format("{} {}", s.matfil, s.output), "MATFIL_S OUTPUT_S");
-    for (const SubsurfaceBlock& b : s.blocks) {
-      group(fmt::format("{}", b.isubs), "ISUBS");
-      if (b.isubs == 2 || b.isubs == 6) {
-        group(fmt::format("{} {} {}", b.ixl, b.ixinc, b.ixh), "IXL IXINC IXH");
-        group(fmt::format("{} {} {}", b.iyl, b.iyinc, b.iyh), "IYL IYINC IYH");
-      } else if (b.isubs == 3 || b.isubs == 7) {
-        group(fmt::format("{} {}", b.ix.size(), b.iy.size()), "NX NY");
-        int_array(b.ix);
-        int_array(b.iy);
-      }
-      if (b.isubs == 1 || b.isubs == 2 || b.isubs == 3) {
-        group(fmt::format("{} {} {}", b.z.size(), real(b.zl), real(b.dz)), "NZ ZL DZ");
-      } else if (b.isubs == 9) {
-        group(fmt::format("{} {} {}", b.x.size(), b.y.size(), b.z.size()), "NX NY NZ");
-        array(b.x, "X");
-        array(b.y, "Y");
-        array(b.z, "Z");
-      } else {
-        group(fmt::format("{}", b.z.size()), "NZ");
-        array(b.z, "Z");
-      }
-    }
-    group("0", "ISUBS = 0: end of the blocks");
-  }
-
-  std::string& out_;
   const CaseRecord& p_;
   const std::filesystem::path& base_dir_;
 };
 
 }  // namespace
 
+namespace {
+
+void module3_case(std::string& out, const CaseRecord& p, const std::filesystem::path& base_dir) {
+  if (p.result_element != 0 || p.contact_problem != 1) {
+    out += fmt::format("  3 {} {}  MODULE\n", p.result_element, p.contact_problem);
+  } else {
+    out += "  3  MODULE\n";
+  }
+  CaseWriter(out, p, base_dir).write();
+}
+
+void module1_case(std::string& out, const WheelRailRecord& r, const std::filesystem::path& base_dir,
+                  CompanionFiles& companions) {
+  out += r.result_element != 0 ? fmt::format("  1 {}  MODULE\n", r.result_element)
+                               : std::string("  1  MODULE\n");
+  write_wheelrail_case(out, r, base_dir, companions);
+}
+
+void origin_comment(std::string& out, const SourceInfo& source, int case_number) {
+  if (!source.file.empty())
+    out +=
+        fmt::format("% from {} line {} (case {})\n", source.file, source.first_line, case_number);
+}
+
+constexpr const char* kHeader =
+    "% written by rollcontact (every case explicit: no \"keep\" digits)\n";
+
+}  // namespace
+
 std::string write_inp_string(const std::vector<CaseRecord>& problems,
                              const std::filesystem::path& base_dir) {
-  std::string out = "% written by rollcontact (every case explicit: no \"keep\" digits)\n";
+  std::string out = kHeader;
   for (const CaseRecord& p : problems) {
     out += "\n";
-    if (!p.source.file.empty())
-      out += fmt::format("% from {} line {} (case {})\n", p.source.file, p.source.first_line,
-                         p.case_number);
-    if (p.result_element != 0 || p.contact_problem != 1) {
-      out += fmt::format("  3 {} {}  MODULE\n", p.result_element, p.contact_problem);
-    } else {
-      out += "  3  MODULE\n";
-    }
-    CaseWriter(out, p, base_dir).write();
+    origin_comment(out, p.source, p.case_number);
+    module3_case(out, p, base_dir);
   }
   out += "\n  0  MODULE\n";
   return out;
@@ -351,6 +224,51 @@ std::string write_inp_string(const std::vector<CaseRecord>& problems,
 
 void write_inp_file(const std::filesystem::path& path, const std::vector<CaseRecord>& problems) {
   write_file_atomically(path, write_inp_string(problems, path.parent_path()));
+}
+
+InpText write_inp_text(const std::vector<InputCase>& cases, const std::filesystem::path& base_dir,
+                       const std::string& companion_stem) {
+  InpText result{kHeader, {}};
+  CompanionFiles companions(companion_stem);
+  for (const InputCase& c : cases) {
+    result.text += "\n";
+    if (const auto* p = std::get_if<CaseRecord>(&c)) {
+      origin_comment(result.text, p->source, p->case_number);
+      module3_case(result.text, *p, base_dir);
+    } else {
+      const auto& r = std::get<WheelRailRecord>(c);
+      origin_comment(result.text, r.source, r.case_number);
+      module1_case(result.text, r, base_dir, companions);
+    }
+  }
+  result.text += "\n  0  MODULE\n";
+  result.companions = companions.files();
+  return result;
+}
+
+void write_inp_input_file(const std::filesystem::path& path, const std::vector<InputCase>& cases) {
+  const std::filesystem::path dir = path.parent_path();
+  const InpText inp = write_inp_text(cases, dir, path.stem().string());
+  // A companion must not replace a file the cases read (or the .inp itself).
+  const auto same_file = [](const std::filesystem::path& a, const std::filesystem::path& b) {
+    std::error_code ec;
+    return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+  };
+  for (const CompanionFile& f : inp.companions) {
+    const std::filesystem::path target = dir / f.name;
+    bool clash = same_file(target, path);
+    for (const InputCase& c : cases)
+      if (const auto* r = std::get_if<WheelRailRecord>(&c))
+        for (const ProfileSpec* ps : {&r->rail, &r->wheel})
+          clash = clash || (!ps->path.empty() && same_file(target, ps->path));
+    if (clash)
+      throw Error(
+          fmt::format("the profile table {} would replace a file the cases read: choose "
+                      "another output name",
+                      target.string()));
+  }
+  for (const CompanionFile& f : inp.companions) write_file_atomically(dir / f.name, f.text);
+  write_file_atomically(path, inp.text);
 }
 
 }  // namespace rollcontact::format

@@ -1,12 +1,15 @@
 #pragma once
-// Writer of CONTACT .inp text (spec/inp-format.md, module 3) from Problems: the way back from
-// TOML case files to the control-digit language, readable by CONTACT and by read_inp_string().
+// Writer of CONTACT .inp text (spec/inp-format.md, modules 3 and 1) from case records: the way
+// back from TOML case files to the control-digit language, readable by CONTACT and by
+// read_input_string().
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "format/inp/case_record.hpp"
+#include "format/inp/inp_reader.hpp"
+#include "format/inp/inp_writer_module1.hpp"
 
 namespace rollcontact::format {
 
@@ -22,5 +25,25 @@ std::string write_inp_string(const std::vector<CaseRecord>& problems,
 
 /// Writes write_inp_string(problems, path's folder) to `path` atomically.
 void write_inp_file(const std::filesystem::path& path, const std::vector<CaseRecord>& problems);
+
+/// An .inp text and the files it names that the writer makes (profiles given as points).
+struct InpText {
+  std::string text;
+  std::vector<CompanionFile> companions;
+};
+
+/// The .inp text of module-3 and module-1 (wheel/rail) cases, every case explicit: module-3
+/// cases as write_inp_string, wheel/rail cases after a module line "1 REID MODULE" with Z=3,
+/// E=3 (5 with a flexible wheel), C, L, G, D and V resolved (write_wheelrail_case). Profile files
+/// are named relative to `base_dir`; profiles given as points become companion tables named
+/// `<companion_stem>_rail1.txt`, ….
+InpText write_inp_text(const std::vector<InputCase>& cases,
+                       const std::filesystem::path& base_dir = {},
+                       const std::string& companion_stem = "case");
+
+/// Writes write_inp_text(cases, path's folder, path's stem) to `path` and its companion tables
+/// beside it, each atomically; a companion that would replace a profile file one of the cases
+/// reads is refused (rollcontact::Error) before anything is written.
+void write_inp_input_file(const std::filesystem::path& path, const std::vector<InputCase>& cases);
 
 }  // namespace rollcontact::format

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
@@ -122,6 +124,13 @@ SlicedProfile read_slices_file(const std::filesystem::path& path, const ProfileO
     }
   }
   return sp;
+}
+
+bool has_slices_extension(const std::filesystem::path& path, bool is_wheel) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == (is_wheel ? ".slcw" : ".slcs");
 }
 
 }  // namespace rollcontact::format

@@ -12,6 +12,10 @@
 
 namespace rollcontact::format {
 
+/// True when `path` has the slices extension of its body: `.slcw` for a wheel, `.slcs` for a
+/// rail (any letter case).
+bool has_slices_extension(const std::filesystem::path& path, bool is_wheel);
+
 /// Reads a slices file and every slice profile it names (relative to the slices file's folder),
 /// each processed with `options`. Throws InputError naming the slices file and line (header
 /// values out of range, slice positions not increasing, a missing slice file) or the slice file

@@ -493,10 +493,6 @@ class WheelRailWriter {
 
   void write() {
     const ControlDigits& d = r_.digits;
-    if (r_.rail.sliced || r_.wheel.sliced)
-      throw Error(fmt::format(
-          "case {}: variable profiles (slices files) have no TOML case-file equivalent yet",
-          r_.case_number));
     out_ += "\n[[case]]\n";
     if (!r_.source.file.empty())
       out_ += fmt::format("# from {} line {} (case {}, module 1)\n", r_.source.file,
@@ -544,15 +540,22 @@ class WheelRailWriter {
 
   void profile(std::string_view key, const ProfileSpec& ps) {
     table(fmt::format("case.wheel_rail.{}", key));
-    std::error_code ec;
-    const std::filesystem::path rel = base_dir_.empty()
-                                          ? std::filesystem::path(ps.path)
-                                          : std::filesystem::relative(ps.path, base_dir_, ec);
-    line("file",
-         quote((ec || rel.empty() ? std::filesystem::path(ps.path) : rel).generic_string()));
-    if (ps.mirror_y == 1) line("mirror_y", "true");
-    if (ps.mirror_z != 0) line("mirror_z", ps.mirror_z == 1 ? "\"yes\"" : "\"no\"");
-    if (ps.scale_yz != 1.0) line("scale", real(ps.scale_yz));
+    if (ps.path.empty() && !ps.sliced) {
+      // Given as points: written as read, already mirrored and scaled (z downwards).
+      line("points", fmt::format("{{ y_mm = {}, z_mm = {} }}", real_array(ps.profile->y),
+                                 real_array(ps.profile->z)));
+      line("mirror_z", "\"no\"");
+    } else {
+      std::error_code ec;
+      const std::filesystem::path rel = base_dir_.empty()
+                                            ? std::filesystem::path(ps.path)
+                                            : std::filesystem::relative(ps.path, base_dir_, ec);
+      line("file",
+           quote((ec || rel.empty() ? std::filesystem::path(ps.path) : rel).generic_string()));
+      if (ps.mirror_y == 1) line("mirror_y", "true");
+      if (ps.mirror_z != 0) line("mirror_z", ps.mirror_z == 1 ? "\"yes\"" : "\"no\"");
+      if (ps.scale_yz != 1.0) line("scale", real(ps.scale_yz));
+    }
     if (ps.smooth != 0.0) line("smooth", real(ps.smooth));
     static constexpr const char* smoothing[] = {"spline", "weighted_spline", "weighted_bspline"};
     if (ps.ismooth != 0) line("smoothing", quote(smoothing[std::clamp(ps.ismooth, 0, 2)]));

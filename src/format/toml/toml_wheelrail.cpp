@@ -16,6 +16,7 @@
 #include "format/inp/inp_blocks.hpp"
 #include "format/profiles/profile_points.hpp"
 #include "format/profiles/profile_reader.hpp"
+#include "format/profiles/profile_slices.hpp"
 #include "format/text/file_names.hpp"
 #include "format/toml/toml_sections.hpp"
 
@@ -32,10 +33,10 @@ constexpr std::array<schema::Choice, 3> mirror_z_choices{{{0, "auto"}, {-1, "no"
 constexpr std::array<schema::Choice, 3> smoothing_choices{
     {{0, "spline"}, {1, "weighted_spline"}, {2, "weighted_bspline"}}};
 
-/// A profile table: `file` (relative to the TOML file) or `points = { y_mm, z_mm }`, and the
-/// options of the .inp profile lines.
-ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, const Context& ctx,
-                         std::vector<std::string>& warnings) {
+/// A profile table: `file` (relative to the TOML file; a profile or a slices file) or
+/// `points = { y_mm, z_mm }`, and the options of the .inp profile lines.
+ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, double gauge_height_mm,
+                         const Context& ctx, std::vector<std::string>& warnings) {
   Table t = w.table(key);
   ProfileSpec ps;
   ps.mirror_y = t.boolean_or("mirror_y", false) ? 1 : 0;
@@ -62,9 +63,20 @@ ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, const Co
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
       t.fail_key("file", fmt::format("profile file '{}' not found", *file));
-    if (profile_format_of(path) == ProfileFormat::Slices)
-      t.fail_key("file", "variable profiles (slices files) are not supported in TOML yet");
-    ps.profile = std::make_shared<const Profile>(read_profile_file(path, options, warnings));
+    if (profile_format_of(path) == ProfileFormat::Slices) {
+      // Variable profiles (spec/inp-format.md §8.4): wheel slices around the axle, rail slices
+      // along the track (which place the rail by rail_origin_mm).
+      if (!has_slices_extension(path, is_wheel))
+        t.fail_key("file", fmt::format("a {} profile needs a {} slices file",
+                                       is_wheel ? "wheel" : "rail", is_wheel ? ".slcw" : ".slcs"));
+      if (!is_wheel && gauge_height_mm > 0.0)
+        t.fail_key("file",
+                   "rail slices (.slcs) need track.rail_origin_mm instead of a gauge height");
+      ps.sliced = true;
+      ps.slices = std::make_shared<const SlicedProfile>(read_slices_file(path, options, warnings));
+    } else {
+      ps.profile = std::make_shared<const Profile>(read_profile_file(path, options, warnings));
+    }
   } else {
     RawProfile raw;
     raw.file = t.key_path("points");
@@ -76,12 +88,19 @@ ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, const Co
     ps.file = raw.file;
     ps.profile = std::make_shared<const Profile>(finish_profile(raw, options, warnings));
   }
-  const double chord = profile_chord_length(*ps.profile);
-  if (!is_admissible_profile_length(chord))
-    t.fail(
-        fmt::format("the {} profile has a length of {:.6g} mm, outside 5..500 mm (check scale "
-                    "= {} or the file's units)",
-                    is_wheel ? "wheel" : "rail", chord, ps.scale_yz));
+  const auto check_length = [&](const Profile& profile) {
+    const double chord = profile_chord_length(profile);
+    if (!is_admissible_profile_length(chord))
+      t.fail(
+          fmt::format("the {} profile has a length of {:.6g} mm, outside 5..500 mm (check scale "
+                      "= {} or the file's units)",
+                      is_wheel ? "wheel" : "rail", chord, ps.scale_yz));
+  };
+  if (ps.sliced) {
+    for (const Profile& slice : ps.slices->slices) check_length(slice);
+  } else {
+    check_length(*ps.profile);
+  }
   t.finish();
   return ps;
 }
@@ -248,6 +267,13 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   // The shared sections through the module-3 readers, into a scratch record.
   CaseRecord shared;
   shared.source.file = file;
+  // The tangential problem first: the material and heat sections check their models against it.
+  if (auto t = c.opt_table("tangential")) {
+    shared.digits.t = t->choice_or("problem", schema::tangential_problem, 3);
+    t->finish();  // creepages come from the wheelset's motion
+  } else {
+    shared.digits.t = 3;
+  }
   VariableFriction variation;
   read_solver(c, shared);
   read_friction(c, shared, &variation);
@@ -274,12 +300,6 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   d.d = 2;
   d.z = 3;
   d.e = 3;
-  if (auto t = c.opt_table("tangential")) {
-    d.t = t->choice_or("problem", schema::tangential_problem, 3);
-    t->finish();  // creepages come from the wheelset's motion
-  } else {
-    d.t = 3;
-  }
   if (auto t = c.opt_table("normal")) {
     d.b = t->choice_or("method", schema::normal_method, 0);
     t->finish();  // the load is the wheelset's: wheel_rail.vertical_force_N or position.z_mm
@@ -296,9 +316,9 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   r.config = w.choice_or("side", side_choices, 1);
   read_discretisation(w, r);
   read_track(w, r);
-  r.rail = read_profile(w, "rail", false, ctx, r.source.warnings);
+  r.rail = read_profile(w, "rail", false, r.track.gaught, ctx, r.source.warnings);
   read_wheelset(w, r);
-  r.wheel = read_profile(w, "wheel", true, ctx, r.source.warnings);
+  r.wheel = read_profile(w, "wheel", true, r.track.gaught, ctx, r.source.warnings);
   read_motion(w, r);
   read_wheel_deviation(w, r);
   read_massless_rail(w, r);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "format/inp/inp_reader.hpp"
+#include "format/inp/wheelrail_record.hpp"
 #include "format/toml/toml_case_reader.hpp"
 #include "format/toml/toml_case_writer.hpp"
 #include "rollcontact/errors.hpp"
@@ -55,6 +56,38 @@ TEST(TomlRoundTrip, Module1ExamplesAreNotSupportedYet) {
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find("not supported yet"), std::string::npos) << e.what();
     }
+  }
+}
+
+TEST(TomlRoundTrip, WheelSlicesRoundTrip) {
+  // wheelflat: 26 cases on a wheel given by 258 slices (S1002_flat.slcw) -> TOML `file =` the
+  // slices file -> the same cases and the same slices, bit for bit.
+  REQUIRE_EXAMPLES();
+  std::vector<InputCase> from_inp = read_input_cases(examples_dir / "wheelflat.inp");
+  const std::string toml = write_toml_input_string(from_inp, examples_dir);
+  EXPECT_NE(toml.find("file = \"S1002_flat.slcw\""), std::string::npos);
+  std::vector<InputCase> from_toml;
+  ASSERT_NO_THROW(from_toml = read_toml_input_string(toml, "wheelflat.toml", examples_dir));
+  ASSERT_EQ(from_toml.size(), from_inp.size());
+  for (auto* cases : {&from_inp, &from_toml})
+    for (auto& c : *cases) std::visit([](auto& r) { r.source = {}; }, c);
+  EXPECT_EQ(write_toml_input_string(from_toml, examples_dir),
+            write_toml_input_string(from_inp, examples_dir));
+  const auto& a = std::get<WheelRailRecord>(from_inp.back()).wheel;
+  const auto& b = std::get<WheelRailRecord>(from_toml.back()).wheel;
+  ASSERT_TRUE(b.sliced);
+  ASSERT_EQ(b.slices->slices.size(), a.slices->slices.size());
+  EXPECT_EQ(b.slices->u, a.slices->u);
+  EXPECT_EQ(b.slices->slices[130].z, a.slices->slices[130].z);
+  // A wheel's slices as the rail: refused with the key.
+  std::string wrong = toml;
+  wrong.replace(wrong.find("file = \"r300_wide.prr\""),
+                std::string("file = \"r300_wide.prr\"").size(), "file = \"S1002_flat.slcw\"");
+  try {
+    (void)read_toml_input_string(wrong, "wrong.toml", examples_dir);
+    ADD_FAILURE() << "a .slcw rail was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(".slcs slices file"), std::string::npos) << e.what();
   }
 }
 
