@@ -7,6 +7,7 @@ Units throughout: mm, N, N/mm2 (MPa), s, rad.
     r = rc.solve(rc.hertz_case(fn_N=1e4, semi_axes_mm=(3.0, 3.0), creepage_x=1e-3))
     r["fx"], r["pn"].shape, r["grid"]["x"]     # totals [N], fields (my, mx), centres [mm]
     curve = rc.sweep(case, "tangential.creepage_x", [0, 1e-4, 2e-4])
+    rc.write_inp([case], "case.inp")           # the same cases in CONTACT's input format
     rc.plot.field(r, "pressure").figure.savefig("p.png")
 
 A case is a dict with the tables of a TOML case file (docs/case-files.md: normal, tangential,
@@ -20,9 +21,10 @@ ux, uy, un [mm], sx, sy (relative slip [-]), h [mm] and state (0 exterior, 1 adh
 from ._rollcontact import CreepLookupTable, Error, InputError, __version__
 from ._rollcontact import Solver as _CoreSolver
 from ._rollcontact import run_file as _run_file
+from ._rollcontact import write_inp_from_toml as _write_inp_from_toml
 from .cases import hertz_case, set_value, to_toml
 
-__all__ = ["run", "solve", "sweep", "Solver", "hertz_case", "to_toml", "set_value",
+__all__ = ["run", "solve", "sweep", "write_inp", "Solver", "hertz_case", "to_toml", "set_value",
            "CreepLookupTable", "Error", "InputError", "__version__"]
 
 
@@ -67,6 +69,17 @@ def sweep(case, key, values):
     solver, returning the list of result dicts in the order of `values`."""
     solver = Solver()
     return [solver.solve(set_value(case, key, v)) for v in values]
+
+
+def write_inp(cases, path, base_dir="."):
+    """Write cases (a dict, a list of dicts, or TOML text) as a CONTACT .inp file at path, every
+    value explicit (`rollcontact convert case.toml case.inp`): to run them in CONTACT or keep them
+    in its format. Profile files are found relative to base_dir and named relative to path's
+    folder; profiles given as points are written as tables beside the .inp file."""
+    if isinstance(cases, dict):
+        cases = [cases]
+    text = cases if isinstance(cases, str) else to_toml(cases)
+    _write_inp_from_toml(text, str(path), str(base_dir))
 
 
 from . import plot  # noqa: E402  (matplotlib is imported only when a plot is made)

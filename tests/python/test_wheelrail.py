@@ -98,6 +98,14 @@ def test_wheelrail_case_from_a_python_dict(cli, tmp_path):
     (t,) = rc.run(tmp_path / "case.toml", tmp_path / "py")  # a TOML file run from Python
     assert t["force_tr"] == ref["force_tr"]
     assert t["side"] == "right" and len(t["rail_profile"]["y"]) > 100
+    # The same case in CONTACT's input format, run by the CLI: the same forces.
+    (tmp_path / "inp").mkdir()
+    rc.write_inp(case, tmp_path / "inp" / "case.inp", base_dir=tmp_path)
+    text = (tmp_path / "inp" / "case.inp").read_text()
+    assert "'../MBench_UIC60_v3.prr'" in text and "  1  MODULE" in text
+    subprocess.run([cli, "run", "-q", str(tmp_path / "inp" / "case.inp")], check=True)
+    written = json.loads((tmp_path / "inp" / "case.json").read_text())["cases"][0]
+    assert written["force_tr"] == ref["force_tr"]
     ys = [rc.set_value(case, "wheel_rail.position.y_mm", y) for y in (0.0, 2.0, 4.0)]
     solver = rc.Solver()
     lateral = [solver.solve(c, base_dir=tmp_path)["patches"][0]["reference_tr"][1] for c in ys]

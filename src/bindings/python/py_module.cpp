@@ -16,6 +16,7 @@
 #include "batch/run_input.hpp"
 #include "bindings/python/py_convert.hpp"
 #include "format/inp/inp_reader.hpp"
+#include "format/inp/inp_writer.hpp"
 #include "format/inp/to_wheelrail.hpp"
 #include "format/toml/toml_case_reader.hpp"
 #include "rollcontact/creep_lookup.hpp"
@@ -161,6 +162,13 @@ py::array_t<double> evaluate_lookup(const CreepLookupTable& t, const py::object&
   return out;
 }
 
+/// Writes the cases of TOML text as a CONTACT .inp file (`rollcontact convert`): profile files
+/// named in the text are found relative to `base_dir` and named relative to the .inp file.
+void write_inp_from_toml(const std::string& toml, const std::filesystem::path& path,
+                         const std::filesystem::path& base_dir) {
+  format::write_inp_input_file(path, format::read_toml_input_string(toml, "python", base_dir));
+}
+
 PYBIND11_MODULE(_rollcontact, m) {
   m.doc() = "rollcontact: rolling and sliding contact (CONTACT-compatible), compiled core";
   m.attr("__version__") = rollcontact::version_string;
@@ -173,6 +181,10 @@ PYBIND11_MODULE(_rollcontact, m) {
         "dicts, one per case (fields as NumPy arrays of shape (my, mx)). unvalidated: also "
         "solve the wheel/rail features not yet validated against CONTACT, with a warning each "
         "(`rollcontact run --unvalidated`).");
+  m.def("write_inp_from_toml", &write_inp_from_toml, py::arg("toml"), py::arg("path"),
+        py::arg("base_dir") = std::filesystem::path{},
+        "Write the [[case]]s of TOML text as a CONTACT .inp file (module 3 and wheel/rail), every "
+        "value explicit; profiles given as points become tables beside it.");
   py::class_<Solver>(m, "Solver",
                      "Solves cases given as TOML text, keeping operators and "
                      "sequences between calls.")
