@@ -56,7 +56,10 @@ int convert(const ConvertSettings& s) {
     // TOML -> .inp: module-3 and wheel/rail cases (profiles given as points become tables
     // beside the .inp file).
     const std::vector<format::InputCase> cases = format::read_toml_input_file(in);
-    format::write_inp_input_file(out, cases);
+    const auto tables = format::write_inp_input_file(out, cases);
+    if (!s.quiet)
+      for (const std::filesystem::path& t : tables)
+        fmt::print("wrote the profile table {} (a profile given as points)\n", t.string());
     return report(s, in, out, cases.size(), identities_of(cases));
   }
   const std::vector<format::InputCase> cases = batch::read_input_file(in);

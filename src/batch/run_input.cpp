@@ -150,9 +150,11 @@ CaseOutcome solve_one(const format::InputCase& problem, RunState& state) {
   }
   outcome = m3 ? solve_module3(*m3, state) : solve_module1(*m1, state);
   if (!outcome.error.empty()) {
+    // Every message names the case's file and line once (geometry errors carry them already).
     const format::SourceInfo& src = identity.source;
-    if (!src.file.empty())
-      outcome.error = src.file + ":" + std::to_string(src.first_line) + ": " + outcome.error;
+    const std::string where = src.file + ":" + std::to_string(src.first_line) + ": ";
+    if (!src.file.empty() && outcome.error.rfind(where, 0) != 0)
+      outcome.error = where + outcome.error;
   }
   return outcome;
 }

@@ -166,7 +166,8 @@ py::array_t<double> evaluate_lookup(const CreepLookupTable& t, const py::object&
 /// named in the text are found relative to `base_dir` and named relative to the .inp file.
 void write_inp_from_toml(const std::string& toml, const std::filesystem::path& path,
                          const std::filesystem::path& base_dir) {
-  format::write_inp_input_file(path, format::read_toml_input_string(toml, "python", base_dir));
+  (void)format::write_inp_input_file(path,
+                                     format::read_toml_input_string(toml, "python", base_dir));
 }
 
 PYBIND11_MODULE(_rollcontact, m) {

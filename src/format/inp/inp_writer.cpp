@@ -246,7 +246,8 @@ InpText write_inp_text(const std::vector<InputCase>& cases, const std::filesyste
   return result;
 }
 
-void write_inp_input_file(const std::filesystem::path& path, const std::vector<InputCase>& cases) {
+std::vector<std::filesystem::path> write_inp_input_file(const std::filesystem::path& path,
+                                                        const std::vector<InputCase>& cases) {
   const std::filesystem::path dir = path.parent_path();
   const InpText inp = write_inp_text(cases, dir, path.stem().string());
   // A companion must not replace a file the cases read (or the .inp itself).
@@ -267,8 +268,13 @@ void write_inp_input_file(const std::filesystem::path& path, const std::vector<I
                       "another output name",
                       target.string()));
   }
-  for (const CompanionFile& f : inp.companions) write_file_atomically(dir / f.name, f.text);
+  std::vector<std::filesystem::path> written;
+  for (const CompanionFile& f : inp.companions) {
+    write_file_atomically(dir / f.name, f.text);
+    written.push_back(dir / f.name);
+  }
   write_file_atomically(path, inp.text);
+  return written;
 }
 
 }  // namespace rollcontact::format

@@ -43,7 +43,9 @@ InpText write_inp_text(const std::vector<InputCase>& cases,
 
 /// Writes write_inp_text(cases, path's folder, path's stem) to `path` and its companion tables
 /// beside it, each atomically; a companion that would replace a profile file one of the cases
-/// reads is refused (rollcontact::Error) before anything is written.
-void write_inp_input_file(const std::filesystem::path& path, const std::vector<InputCase>& cases);
+/// reads is refused (rollcontact::Error) before anything is written. Returns the companions'
+/// paths.
+std::vector<std::filesystem::path> write_inp_input_file(const std::filesystem::path& path,
+                                                        const std::vector<InputCase>& cases);
 
 }  // namespace rollcontact::format

@@ -113,6 +113,14 @@ TEST(SolveCase, GeometryErrorsNameFileLineAndCase) {
     EXPECT_NE(what.find("excludes every element"), std::string::npos) << what;
     EXPECT_EQ(e.code(), ErrorCode::Discretisation);
   }
+  // In a run the case's error names its file and line once (the run adds them to errors that
+  // lack them).
+  const test_support::ScratchDir scratch("rollcontact_geometry_error_once");
+  RunOptions options;
+  const RunResult run = run_problems({r}, "demo.inp", scratch / "demo", options);
+  const std::string& error = run.cases.at(0).error;
+  EXPECT_EQ(error.rfind("demo.inp:42: case 7: ", 0), 0u) << error;
+  EXPECT_EQ(error.find("demo.inp:42", 1), std::string::npos) << error;
 }
 
 }  // namespace
