@@ -88,6 +88,16 @@ void check_supported(const WheelRailRecord& r) {
   // static cases only, like module 3.
   if (d.h != 0 && d.t != 0 && d.t != 3)
     not_supported(fmt::format("temperature H={} with T={} (steady rolling only)", d.h, d.t));
+  // Force damping (M2=2, physics.md §12) adds C·dF/dt to a patch's forces, the rate taken from
+  // the previous case of the sequence. The first case of a sequence (P=2) has no damping and is
+  // solved as it stands; later ones are refused rather than reported undamped, until the rate's
+  // time step between cases is settled (no reference case uses it; docs/decisions.md).
+  const Damping& damping = r.damping;
+  if (damping.enabled && d.p != 2 && (damping.cdampn != 0.0 || damping.cdampt != 0.0))
+    not_supported(
+        fmt::format("force damping M2=2 (CDAMPN = {} s, CDAMPT = {} s) in a case that "
+                    "continues a sequence (P={}); a new sequence (P=2) has no damping",
+                    damping.cdampn, damping.cdampt, d.p));
 }
 
 model::WheelRailProblem to_wheelrail_problem(const WheelRailRecord& r, bool solve_unvalidated) {

@@ -248,6 +248,34 @@ TEST(InpModule1, FxWsReplacesVpitchWithF1) {
   EXPECT_DOUBLE_EQ(wr(cases, 0).motion.vpitch, 0.0);
 }
 
+TEST(InpModule1, ForceDampingIsRefusedWhereItWouldAct) {
+  // M2=2 (damping line after the materials): a new sequence (P=2) has no damping and is solved;
+  // a case that continues it (P=0) would add C·dF/dt, which is not implemented: refused per case
+  // instead of reported undamped. Zero time constants damp nothing and stay accepted.
+  std::string text = first_case("1203100", "0022033 2");
+  const std::string materials = "  0.28 0.28 82000. 82000.\n";
+  text.replace(text.find(materials), materials.size(), materials + "  0.001 0.002 1e6 2e6\n");
+  const std::string next_position =
+      "  0.0 1.6 10000. 0.1d 0.2d 0.3d\n  2000. 0.1 0.2 0.3 0.4 -4.3\n";
+  text += " 1 MODULE\n 1003100\n 0111002\n 0100321\n" + next_position;  // P=0: continues
+  text += " 1 MODULE\n 1203100\n 0111002\n 0100321\n" + next_position;  // P=2: new sequence
+  const auto cases = read(text + " 0 MODULE\n");
+  ASSERT_EQ(cases.size(), 3u);
+  EXPECT_TRUE(wr(cases, 1).damping.enabled);
+  EXPECT_DOUBLE_EQ(wr(cases, 1).damping.cdampt, 0.002);
+  EXPECT_NO_THROW((void)to_wheelrail_problem(wr(cases, 0)));
+  try {
+    (void)to_wheelrail_problem(wr(cases, 1));
+    ADD_FAILURE() << "a damped continuation was accepted";
+  } catch (const NotSupportedError& e) {
+    EXPECT_NE(std::string(e.what()).find("force damping M2=2"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW((void)to_wheelrail_problem(wr(cases, 2)));
+  format::WheelRailRecord undamped = wr(cases, 1);
+  undamped.damping.cdampn = undamped.damping.cdampt = 0.0;
+  EXPECT_NO_THROW((void)to_wheelrail_problem(undamped));
+}
+
 TEST(InpModule1, CaseNumbersAreSharedWithModule3) {
   const std::string module3 =
       " 3 MODULE\n 100\n 022020\n 0000001\n  100 100 30 1 1e-4\n  0.1 0 0 0\n"
