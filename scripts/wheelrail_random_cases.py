@@ -39,6 +39,10 @@ ellipse, 1e-2*FZ (its jump rule) and 2e-3 mm (the validation's Z_WS). The inputs
 with the same digits in both runs (y with 4 against 5 decimals once looked like a 1e-3*FZ
 dependence on the sequence on a flange).
 
+With --round-trip every input (each single case, each sequence) is also converted to a TOML
+case file and back to .inp (`rollcontact convert` both ways) and solved again: any difference
+from the original's results, bit for bit, is a problem (the converters drop or bend a value).
+
     /usr/bin/python3 scripts/wheelrail_random_cases.py --exe build/release/bin/rollcontact \\
         --cases 300 --seed 1 --out /tmp/random_cases
     /usr/bin/python3 scripts/wheelrail_random_cases.py --exe build/release/bin/rollcontact \\
@@ -180,6 +184,34 @@ def judge(p, returncode, stderr, json_path):
     return status, None
 
 
+def results_without_input(path):
+    """The cases of a JSON output without the parts that echo the input (digits, source)."""
+    drop = ("input", "digits", "source", "control")
+    return [{k: v for k, v in c.items() if k not in drop}
+            for c in json.loads(path.read_text())["cases"]]
+
+
+def round_trip(args, inp, extra):
+    """None when `inp` converted to TOML and back to .inp solves to the same results bit for bit
+    (`rollcontact convert` both ways), else the problem."""
+    back = args.out / "round_trip"
+    back.mkdir(exist_ok=True)
+    toml, again = back / (inp.stem + ".toml"), back / (inp.stem + ".inp")
+    for source, target in ((inp, toml), (toml, again)):
+        conv = subprocess.run([args.exe, "convert", "-q", str(source), str(target)],
+                              capture_output=True, text=True, timeout=args.timeout)
+        if conv.returncode != 0:
+            return f"convert {source.name} -> {target.name}: {conv.stderr.strip()[-300:]}"
+    subprocess.run([args.exe, "run", str(again), "-o", str(back), "-q"] + extra,
+                   capture_output=True, text=True, timeout=args.timeout * 10)
+    a = results_without_input(args.out / "out" / (inp.stem + ".json"))
+    b = results_without_input(back / (inp.stem + ".json"))
+    differ = [k + 1 for k, (x, y) in enumerate(zip(a, b)) if x != y]
+    if len(a) != len(b) or differ:
+        return f"converted .inp -> TOML -> .inp: cases {differ or 'count'} solve differently"
+    return None
+
+
 def sequence_case_lines(p, first):
     """A case of a sequence: the whole first case, or only what changes (later cases keep the
     friction, discretisation, material and track: digits 1, and E = 2: the wheelset only)."""
@@ -229,6 +261,9 @@ def run_sequences(args, rng):
             print(f"PROBLEM {seq.name}: exit {run.returncode}: {run.stderr.strip()[-300:]}")
             continue
         in_sequence = json.loads((args.out / "out" / (seq.stem + ".json")).read_text())["cases"]
+        if args.round_trip and (problem := round_trip(args, seq, [])) is not None:
+            problems += 1
+            print(f"PROBLEM {seq.name}: {problem}")
         for k, p in enumerate(cases):
             alone = args.out / f"{seq.stem}_case{k + 1}.inp"
             alone.write_text("\n".join(sequence_case_lines(p, True) + [" 0 MODULE"]) + "\n")
@@ -268,6 +303,9 @@ def main():
                     help="cases of CONTACT's wheel-flat example (wheel slices) instead")
     ap.add_argument("--viscoelastic", action="store_true",
                     help="viscoelastic bodies (M=1) in every case")
+    ap.add_argument("--round-trip", action="store_true",
+                    help="also convert each input .inp -> TOML -> .inp and require the same "
+                         "results bit for bit (a difference is a problem)")
     args = ap.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     for name in PROFILES + ["r300_wide.prr", "S1002_flat.slcw"]:
@@ -305,6 +343,8 @@ def main():
             if status != "converged" and problem is None:
                 message = json.loads((args.out / "out" / (inp.stem + ".json")).read_text())
                 print(f"  {inp.name} {status}: {message['cases'][0]['message'][:160]}")
+        if problem is None and args.round_trip and status is not None:
+            problem = round_trip(args, inp, command[6:])
         if problem is not None:
             problems += 1
             print(f"PROBLEM {inp.name}: {problem}  {p}")
