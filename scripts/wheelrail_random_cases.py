@@ -55,6 +55,7 @@ import argparse
 import json
 import math
 import random
+import re
 import shutil
 import subprocess
 import sys
@@ -185,10 +186,16 @@ def judge(p, returncode, stderr, json_path):
 
 
 def results_without_input(path):
-    """The cases of a JSON output without the parts that echo the input (digits, source)."""
+    """The cases of a JSON output without the parts that echo the input (digits, source) and
+    without the input's file and line in front of a message."""
     drop = ("input", "digits", "source", "control")
-    return [{k: v for k, v in c.items() if k not in drop}
-            for c in json.loads(path.read_text())["cases"]]
+    cases = []
+    for c in json.loads(path.read_text())["cases"]:
+        c = {k: v for k, v in c.items() if k not in drop}
+        if isinstance(c.get("message"), str):
+            c["message"] = re.sub(r"^\S+\.inp:\d+: ", "", c["message"])
+        cases.append(c)
+    return cases
 
 
 def round_trip(args, inp, extra):
