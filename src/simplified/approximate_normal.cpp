@@ -159,14 +159,18 @@ ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h,
   const double a = r.hertz.aa, b = r.hertz.bb;
 
   // 3.–4. Per row the virtual penetration ε(y) that reproduces the ellipse, the contact edges
-  // where h_tot = (1 − ε)·h_min, and a semi-elliptic shape over the row.
+  // where h_tot = (1 − ε)·h_min, and a semi-elliptic shape over the row. ε > 1 (a row the
+  // ellipse wants longer than its interpenetration: a second lobe of the gap beyond the
+  // ellipse) is kept: the row's shape spans the virtual row and its pressure is cut where the
+  // bodies do not interpenetrate (docs/decisions.md, KPEC c1: CONTACT's forces within 2 %).
   std::vector<double> length(static_cast<std::size_t>(grid.my), 0.0),
       middle(static_cast<std::size_t>(grid.my), 0.0);
+  std::vector<char> virtual_row(static_cast<std::size_t>(grid.my), 0);
   double longest = 0.0;
   for (int iy = 0; iy < grid.my; ++iy) {
     const double s = (grid.y_centre(iy) - y_mid) / b;
     const double eps_raw = (a1 * a * a - (a1 * a * a - b1 * b * b) * s * s) / pen;
-    const double eps = std::clamp(eps_raw, 0.0, 1.0);
+    const double eps = std::max(eps_raw, 0.0);
     const double level = (1.0 - eps) * d.h_min;
     int first = -1, last = -1;
     bool interpenetrates = false;
@@ -179,7 +183,8 @@ ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h,
       }
     }
     if (eps_raw > 1.0 && interpenetrates) ++r.rows_beyond_interpenetration;
-    if (first < 0) continue;
+    if (first < 0 || (eps_raw > 1.0 && !interpenetrates)) continue;
+    virtual_row[static_cast<std::size_t>(iy)] = eps_raw > 1.0;
     const double x_le = first > 0 ? crossing_x(grid, h, iy, first, first - 1, level)
                                   : grid.x_centre(first) - 0.5 * grid.dx;
     const double x_te = last < grid.mx - 1 ? crossing_x(grid, h, iy, last, last + 1, level)
@@ -194,10 +199,11 @@ ApproximateNormal kpec_pressure(const Grid& grid, const std::vector<double>& h,
   for (int iy = 0; iy < grid.my; ++iy) {
     const auto row = static_cast<std::size_t>(iy);
     const double half_length = 0.5 * length[row];
+    const double cut = virtual_row[row] ? 0.0 : kExcluded;
     for (int ix = 0; ix < grid.mx; ++ix) {
       const double dx = grid.x_centre(ix) - middle[row];
       const double t = half_length * half_length - dx * dx;
-      if (t > 0.0 && gap(grid, h, ix, iy) < kExcluded)
+      if (t > 0.0 && gap(grid, h, ix, iy) < cut)
         shape[grid.index(ix, iy)] = std::sqrt(t) / (0.5 * longest);
     }
   }

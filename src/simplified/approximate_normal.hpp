@@ -18,8 +18,9 @@ struct ApproximateNormal {
   double pen_total = 0.0;  ///< −min h_tot [mm] (0: no interpenetration, pn all zero)
   HertzReport hertz;       ///< Hertz solution of the equivalent curvatures at pen_total
   /// KPEC: rows that interpenetrate where the ellipse correction asks for more than the full
-  /// interpenetration (ε(y) > 1, clamped to 1): a second lobe of the gap outside the equivalent
-  /// ellipse. CONTACT's pressures differ there (docs/decisions.md, "KPEC"); 0 for ANALYN.
+  /// interpenetration (ε(y) > 1: the row's virtual length reaches beyond it): a second lobe of
+  /// the gap outside the equivalent ellipse. CONTACT's pressures still differ there
+  /// (docs/decisions.md, "KPEC"); 0 for ANALYN.
   int rows_beyond_interpenetration = 0;
 };
 
