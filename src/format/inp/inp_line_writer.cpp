@@ -43,6 +43,20 @@ std::string InpLineWriter::reals(std::initializer_list<double> v) {
   return s;
 }
 
+void InpLineWriter::control_word3_and_debug(const ControlDigits& d, int solver_method) {
+  const int h = d.h >= 1 ? 3 : 0;
+  const int r = d.r == 2 || d.r == 3 ? 3 : 1;
+  const int w3 = d.x * 10000000 + h * 1000000 + solver_method * 100000 + d.i * 10000 + d.a * 1000 +
+                 d.o * 100 + d.w * 10 + r;
+  group(fmt::format("{:0{}d}", w3, d.x ? 8 : 7), d.x ? "X-H-G-I-A-O-W-R" : "H-G-I-A-O-W-R");
+  if (d.x == 1) {
+    const DebugDigits& g = d.debug;
+    const int w4 =
+        g.p * 1000000 + g.s * 100000 + g.f * 10000 + g.l * 1000 + g.c * 100 + g.i * 10 + g.n;
+    group(fmt::format("{:07d} {}", w4, g.readln), "P-S-F-L-C-I-N  READLN");
+  }
+}
+
 void InpLineWriter::solver_lines(const SolverSettings& s, int npot_max) {
   if (npot_max > 0) {
     group(fmt::format("{} {} {} {} {} {}", s.maxgs, s.maxin, s.maxnr, s.maxout, inp_real(s.eps),

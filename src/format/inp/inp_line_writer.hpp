@@ -29,6 +29,9 @@ class InpLineWriter {
   void int_array(std::span<const int> v);
   static std::string reals(std::initializer_list<double> v);
 
+  /// Control word 3 `XHGIAOWR` (the same layout in both modules; H as 0/3, G = the solver
+  /// method, R as 1/3: every case explicit) and, with X = 1, the debug word 4 `PSFLCIN READLN`.
+  void control_word3_and_debug(const ControlDigits& d, int solver_method);
   /// The iteration line (line 5) and the G-specific line(s); `npot_max` > 0 appends NPOT_MAX
   /// (module 1).
   void solver_lines(const SolverSettings& s, int npot_max = 0);

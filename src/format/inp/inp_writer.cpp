@@ -46,20 +46,10 @@ class CaseWriter : InpLineWriter {
     const int w2 = d.v * 1000000 + p_.friction.law * 100000 + 2 * 10000 +
                    p_.materials.influence_type * 1000 + d.m * 100 + 2 * 10 +
                    p_.kinematics.extra_slip_mode;
-    const int h = d.h >= 1 ? 3 : 0;
-    const int r = d.r == 2 || d.r == 3 ? 3 : 1;
-    const int w3 = d.x * 10000000 + h * 1000000 + p_.solver.method * 100000 + d.i * 10000 +
-                   d.a * 1000 + d.o * 100 + d.w * 10 + r;
     group(fmt::format("{:06d}", w1), "P-B-T-N-F-S");
     group(fmt::format("{:0{}d} {}", w2, d.v ? 7 : 6, 10 * d.gapwgt + m2),
           d.v ? "V-L-D-C-M-Z-E  10*GAPWGT+M2" : "L-D-C-M-Z-E  10*GAPWGT+M2");
-    group(fmt::format("{:0{}d}", w3, d.x ? 8 : 7), d.x ? "X-H-G-I-A-O-W-R" : "H-G-I-A-O-W-R");
-    if (d.x == 1) {
-      const DebugDigits& g = d.debug;
-      const int w4 =
-          g.p * 1000000 + g.s * 100000 + g.f * 10000 + g.l * 1000 + g.c * 100 + g.i * 10 + g.n;
-      group(fmt::format("{:07d} {}", w4, g.readln), "P-S-F-L-C-I-N  READLN");
-    }
+    control_word3_and_debug(d, p_.solver.method);
   }
 
   void load_line() {
