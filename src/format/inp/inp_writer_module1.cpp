@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "format/inp/inp_line_writer.hpp"
+#include "format/text/file_names.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -144,11 +145,7 @@ class WheelRailCaseWriter : InpLineWriter {
       mirror_z = -1;
       scale = 1.0;
     } else {
-      std::error_code ec;
-      const std::filesystem::path file(ps.path);
-      const std::filesystem::path rel =
-          base_dir_.empty() ? file : std::filesystem::relative(file, base_dir_, ec);
-      name = (ec || rel.empty() ? file : rel).generic_string();
+      name = written_input_name(ps.path, base_dir_);
     }
     if (name.find('\'') != std::string::npos || name.size() > 240)
       throw Error(

@@ -25,4 +25,12 @@ std::filesystem::path resolve_input_name(const std::filesystem::path& base_dir,
   return resolve(base_dir, slashes);
 }
 
+std::string written_input_name(const std::filesystem::path& file,
+                               const std::filesystem::path& base_dir) {
+  std::error_code ec;
+  const std::filesystem::path rel =
+      base_dir.empty() ? file : std::filesystem::relative(file, base_dir, ec);
+  return (ec || rel.empty() ? file : rel).generic_string();
+}
+
 }  // namespace rollcontact::format

@@ -14,4 +14,10 @@ namespace rollcontact::format {
 std::filesystem::path resolve_input_name(const std::filesystem::path& base_dir,
                                          const std::string& name);
 
+/// The inverse for writers: `file` as an input file in `base_dir` names it — relative to
+/// `base_dir` (std::filesystem::relative; `file` itself when base_dir is empty or no relative
+/// form exists), with '/' separators.
+std::string written_input_name(const std::filesystem::path& file,
+                               const std::filesystem::path& base_dir);
+
 }  // namespace rollcontact::format

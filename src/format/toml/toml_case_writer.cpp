@@ -11,6 +11,7 @@
 
 #include "format/inp/to_wheelrail.hpp"
 #include "format/text/atomic_file.hpp"
+#include "format/text/file_names.hpp"
 #include "format/toml/toml_case_schema.hpp"
 #include "rollcontact/errors.hpp"
 
@@ -546,12 +547,7 @@ class WheelRailWriter {
                                  real_array(ps.profile->z)));
       line("mirror_z", "\"no\"");
     } else {
-      std::error_code ec;
-      const std::filesystem::path rel = base_dir_.empty()
-                                            ? std::filesystem::path(ps.path)
-                                            : std::filesystem::relative(ps.path, base_dir_, ec);
-      line("file",
-           quote((ec || rel.empty() ? std::filesystem::path(ps.path) : rel).generic_string()));
+      line("file", quote(written_input_name(ps.path, base_dir_)));
       if (ps.mirror_y == 1) line("mirror_y", "true");
       if (ps.mirror_z != 0) line("mirror_z", ps.mirror_z == 1 ? "\"yes\"" : "\"no\"");
       if (ps.scale_yz != 1.0) line("scale", real(ps.scale_yz));
