@@ -16,9 +16,9 @@
 
 #include "format/inp/inp_blocks.hpp"
 #include "format/inp/inp_control.hpp"
+#include "format/inp/profile_spec_checks.hpp"
 #include "format/profiles/profile_points.hpp"
 #include "format/profiles/profile_reader.hpp"
-#include "format/profiles/profile_slices.hpp"
 #include "format/text/file_names.hpp"
 #include "format/text/inp_checks.hpp"
 #include "rollcontact/errors.hpp"
@@ -569,15 +569,19 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
     in.fail(line, fmt::format("{} profile file '{}' not found (looked for {})", body, ps.file,
                               path.string()));
   }
-  const ProfileFormat format = profile_format_of(path);
-  if (format == ProfileFormat::Slices && !has_slices_extension(path, is_wheel)) {
-    in.fail(line,
+  if (profile_format_of(path) == ProfileFormat::Slices) {
+    switch (slices_file_problem(path, is_wheel, gaught)) {
+      case SlicesFileProblem::none:
+        break;
+      case SlicesFileProblem::wrong_extension:
+        in.fail(
+            line,
             fmt::format("a {} profile needs a {} slices file", body, is_wheel ? ".slcw" : ".slcs"),
             ps.file);
-  }
-  if (format == ProfileFormat::Slices && !is_wheel && gaught > 0.0) {
-    in.fail(line, fmt::format("a rail slices file (.slcs) requires GAUGHT ≤ 0, not {}", gaught),
-            ps.file);
+      case SlicesFileProblem::rail_with_gauge_point:
+        in.fail(line, fmt::format("a rail slices file (.slcs) requires GAUGHT ≤ 0, not {}", gaught),
+                ps.file);
+    }
   }
   ProfileOptions options;
   options.is_wheel = is_wheel;
@@ -585,12 +589,7 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
   options.mirror_z = ps.mirror_z;
   options.scale_yz = ps.scale_yz;
   try {
-    if (format == ProfileFormat::Slices) {
-      ps.sliced = true;
-      ps.slices = std::make_shared<const SlicedProfile>(read_slices_file(path, options, warnings));
-    } else {
-      ps.profile = std::make_shared<const Profile>(read_profile_file(path, options, warnings));
-    }
+    load_profile(ps, path, options, warnings);
   } catch (const InputError& e) {
     // Errors inside the profile file name that file; say where it was asked for.
     throw InputError(
@@ -598,20 +597,12 @@ ProfileSpec Module1Reader::read_profile_line(InpStream& in, bool is_wheel, doubl
         fmt::format("{} ({} profile named at {}:{})", e.message(), body, in.file(), line),
         e.offending());
   }
-  auto check_chord = [&](const Profile& prof) {
-    const double chord = profile_chord_length(prof);
-    if (!is_admissible_profile_length(chord)) {
-      in.fail(line,
-              fmt::format("{} profile '{}' has a chord length of {:.6g} mm, outside 5..500 mm "
-                          "(check SCALEYZ = {})",
-                          body, prof.file, chord, ps.scale_yz),
-              ps.file);
-    }
-  };
-  if (ps.sliced) {
-    for (const Profile& prof : ps.slices->slices) check_chord(prof);
-  } else {
-    check_chord(*ps.profile);
+  if (const InadmissibleLength bad = first_inadmissible_length(ps); bad.profile != nullptr) {
+    in.fail(line,
+            fmt::format("{} profile '{}' has a chord length of {:.6g} mm, outside 5..500 mm "
+                        "(check SCALEYZ = {})",
+                        body, bad.profile->file, bad.chord_mm, ps.scale_yz),
+            ps.file);
   }
   return ps;
 }

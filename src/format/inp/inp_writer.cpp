@@ -8,6 +8,7 @@
 
 #include "format/inp/inp_line_writer.hpp"
 #include "format/text/atomic_file.hpp"
+#include "format/text/file_names.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::format {
@@ -91,9 +92,7 @@ class CaseWriter : InpLineWriter {
       }
       array(pairs, "Y(k) ALPHA(k)");
     } else if (m.influence_type == 9) {
-      const std::filesystem::path file(m.influence_file);
-      const std::string name =
-          (base_dir_.empty() ? file : file.lexically_proximate(base_dir_)).generic_string();
+      const std::string name = written_input_name(m.influence_file, base_dir_);
       if (name.find('\'') != std::string::npos || name.size() > 240) {
         throw Error(
             fmt::format("case {}: the influence file name '{}' cannot be written to .inp "

@@ -235,10 +235,7 @@ class CaseWriter {
     line("model", named(schema::material_model, model, "M", p_));
     line("influence", named(schema::influence, m.influence_type, "C", p_));
     if (m.influence_type == 9) {
-      const std::filesystem::path file(m.influence_file);
-      const std::filesystem::path rel =
-          base_dir_.empty() ? file : file.lexically_proximate(base_dir_);
-      line("influence_file", quote(rel.generic_string()));
+      line("influence_file", quote(written_input_name(m.influence_file, base_dir_)));
     }
     if (model == 1) {
       line("viscoelastic", fmt::format("{{ modulus_factor = {}, relaxation_time_s = {} }}",

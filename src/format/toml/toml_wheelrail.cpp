@@ -14,9 +14,9 @@
 #include <string>
 
 #include "format/inp/inp_blocks.hpp"
+#include "format/inp/profile_spec_checks.hpp"
 #include "format/profiles/profile_points.hpp"
 #include "format/profiles/profile_reader.hpp"
-#include "format/profiles/profile_slices.hpp"
 #include "format/text/file_names.hpp"
 #include "format/toml/toml_sections.hpp"
 
@@ -63,20 +63,22 @@ ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, double g
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
       t.fail_key("file", fmt::format("profile file '{}' not found", *file));
+    // Variable profiles (spec/inp-format.md §8.4): wheel slices around the axle, rail slices
+    // along the track (which place the rail by rail_origin_mm).
     if (profile_format_of(path) == ProfileFormat::Slices) {
-      // Variable profiles (spec/inp-format.md §8.4): wheel slices around the axle, rail slices
-      // along the track (which place the rail by rail_origin_mm).
-      if (!has_slices_extension(path, is_wheel))
-        t.fail_key("file", fmt::format("a {} profile needs a {} slices file",
-                                       is_wheel ? "wheel" : "rail", is_wheel ? ".slcw" : ".slcs"));
-      if (!is_wheel && gauge_height_mm > 0.0)
-        t.fail_key("file",
-                   "rail slices (.slcs) need track.rail_origin_mm instead of a gauge height");
-      ps.sliced = true;
-      ps.slices = std::make_shared<const SlicedProfile>(read_slices_file(path, options, warnings));
-    } else {
-      ps.profile = std::make_shared<const Profile>(read_profile_file(path, options, warnings));
+      switch (slices_file_problem(path, is_wheel, gauge_height_mm)) {
+        case SlicesFileProblem::none:
+          break;
+        case SlicesFileProblem::wrong_extension:
+          t.fail_key("file",
+                     fmt::format("a {} profile needs a {} slices file", is_wheel ? "wheel" : "rail",
+                                 is_wheel ? ".slcw" : ".slcs"));
+        case SlicesFileProblem::rail_with_gauge_point:
+          t.fail_key("file",
+                     "rail slices (.slcs) need track.rail_origin_mm instead of a gauge height");
+      }
     }
+    load_profile(ps, path, options, warnings);
   } else {
     RawProfile raw;
     raw.file = t.key_path("points");
@@ -88,19 +90,11 @@ ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, double g
     ps.file = raw.file;
     ps.profile = std::make_shared<const Profile>(finish_profile(raw, options, warnings));
   }
-  const auto check_length = [&](const Profile& profile) {
-    const double chord = profile_chord_length(profile);
-    if (!is_admissible_profile_length(chord))
-      t.fail(
-          fmt::format("the {} profile has a length of {:.6g} mm, outside 5..500 mm (check scale "
-                      "= {} or the file's units)",
-                      is_wheel ? "wheel" : "rail", chord, ps.scale_yz));
-  };
-  if (ps.sliced) {
-    for (const Profile& slice : ps.slices->slices) check_length(slice);
-  } else {
-    check_length(*ps.profile);
-  }
+  if (const InadmissibleLength bad = first_inadmissible_length(ps); bad.profile != nullptr)
+    t.fail(
+        fmt::format("the {} profile has a length of {:.6g} mm, outside 5..500 mm (check scale "
+                    "= {} or the file's units)",
+                    is_wheel ? "wheel" : "rail", bad.chord_mm, ps.scale_yz));
   t.finish();
   return ps;
 }

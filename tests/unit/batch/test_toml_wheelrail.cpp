@@ -85,6 +85,43 @@ TEST(TomlWheelRail, ErrorsNameFileLineAndKey) {
   EXPECT_THROW((void)format::read_toml_file(toml_case), InputError);
 }
 
+TEST(TomlWheelRail, ProfileChecksAreTheInpReadersWithTheirKeys) {
+  // The checks the .inp reader makes on a profile line (format/inp/profile_spec_checks), here
+  // with TOML's names: a profile scaled as if in metres, a wheel's slices as the rail and rail
+  // slices placed by a gauge height.
+  REQUIRE_EXAMPLES();
+  const test_support::ScratchDir scratch("rollcontact_toml_wheelrail_profiles");
+  const fs::path& dir = with_profiles(scratch);
+  std::ifstream in(toml_case);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string good = all.str();
+  const auto refused = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    text.replace(text.find(from), from.size(), to);
+    std::ofstream(dir / "bad.toml") << text;
+    try {
+      (void)format::read_toml_input_file(dir / "bad.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string wheel = "file = \"MBench_S1002_v3.prw\"";
+  const std::string metres = refused(wheel, wheel + "\nscale = 0.001");
+  EXPECT_NE(metres.find("case[1].wheel_rail.wheel"), std::string::npos) << metres;
+  EXPECT_NE(metres.find("outside 5..500 mm (check scale = 0.001"), std::string::npos) << metres;
+  fs::copy_file(examples_dir / "S1002_flat.slcw", dir / "S1002_flat.slcw");
+  const std::string rail = "file = \"MBench_UIC60_v3.prr\"";
+  const std::string slcw = refused(rail, "file = \"S1002_flat.slcw\"");
+  EXPECT_NE(slcw.find("case[1].wheel_rail.rail.file"), std::string::npos) << slcw;
+  EXPECT_NE(slcw.find("needs a .slcs slices file"), std::string::npos) << slcw;
+  fs::copy_file(examples_dir / "S1002_flat.slcw", dir / "rail.slcs");
+  const std::string slcs = refused(rail, "file = \"rail.slcs\"");
+  EXPECT_NE(slcs.find("need track.rail_origin_mm instead of a gauge height"), std::string::npos)
+      << slcs;
+}
+
 TEST(TomlWheelRail, ConvertedBenchmarkFileGivesTheSameResults) {
   // .inp -> TOML text -> cases: every case of the benchmark file (keep digits resolved in the
   // TOML) solves to the same forces, bit for bit.
