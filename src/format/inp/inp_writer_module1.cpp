@@ -13,17 +13,22 @@ namespace rollcontact::format {
 
 const std::string& CompanionFiles::table_for(const Profile& profile, bool is_wheel) {
   if (const auto it = made_.find(&profile); it != made_.end()) return files_[it->second].name;
-  CompanionFile f;
-  f.name = fmt::format("{}_{}{}.txt", stem_, is_wheel ? "wheel" : "rail",
-                       is_wheel ? ++wheels_ : ++rails_);
-  f.text = fmt::format(
+  std::string text = fmt::format(
       "% {} profile written by rollcontact: y [mm], z [mm] (positive downwards), read as is\n",
       is_wheel ? "wheel" : "rail");
   for (std::size_t k = 0; k < profile.y.size(); ++k)
-    f.text += fmt::format("{} {}\n", inp_real(profile.y[k]), inp_real(profile.z[k]));
-  made_.emplace(&profile, files_.size());
-  files_.push_back(std::move(f));
-  return files_.back().name;
+    text += fmt::format("{} {}\n", inp_real(profile.y[k]), inp_real(profile.z[k]));
+  // Cases that give the same points (each TOML case its own copy) share one table.
+  auto [by_text, is_new] = by_text_.try_emplace(text, files_.size());
+  if (is_new) {
+    CompanionFile f;
+    f.name = fmt::format("{}_{}{}.txt", stem_, is_wheel ? "wheel" : "rail",
+                         is_wheel ? ++wheels_ : ++rails_);
+    f.text = std::move(text);
+    files_.push_back(std::move(f));
+  }
+  made_.emplace(&profile, by_text->second);
+  return files_[by_text->second].name;
 }
 
 namespace {

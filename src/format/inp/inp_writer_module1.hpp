@@ -18,7 +18,8 @@ struct CompanionFile {
   std::string text;
 };
 
-/// The companion files of one .inp text: one per distinct profile without a file, named
+/// The companion files of one .inp text: one per distinct table of points (profiles without a
+/// file; equal points in several cases share one), named
 /// `<stem>_rail<k>.txt` / `<stem>_wheel<k>.txt`.
 class CompanionFiles {
  public:
@@ -30,7 +31,8 @@ class CompanionFiles {
 
  private:
   std::string stem_;
-  std::map<const Profile*, std::size_t> made_;
+  std::map<const Profile*, std::size_t> made_;  ///< profile -> index into files_
+  std::map<std::string, std::size_t> by_text_;  ///< table text -> index into files_
   std::vector<CompanionFile> files_;
   int rails_ = 0, wheels_ = 0;
 };

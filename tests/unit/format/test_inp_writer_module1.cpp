@@ -149,6 +149,25 @@ TEST(InpWriterModule1, ProfilePointsBecomeACompanionTable) {
   EXPECT_EQ(s.motion.fz, r.motion.fz);
 }
 
+TEST(InpWriterModule1, EqualPointsInSeveralCasesShareOneTable) {
+  // Two cases read from TOML separately hold two copies of the same rail points: one table.
+  const test_support::ScratchDir scratch("rollcontact_inp_points_shared");
+  const fs::path wheel = fs::absolute(repo_examples / "profiles" / "MBench_S1002_v3.prw");
+  std::vector<InputCase> cases =
+      read_toml_input_string(points_case(wheel), "points.toml", scratch.path());
+  cases.push_back(read_toml_input_string(points_case(wheel), "points.toml", scratch.path()).at(0));
+  ASSERT_NE(std::get<WheelRailRecord>(cases[0]).rail.profile,
+            std::get<WheelRailRecord>(cases[1]).rail.profile);
+  const std::vector<fs::path> written = write_inp_input_file(scratch / "two.inp", cases);
+  EXPECT_EQ(written.size(), 1U);
+  EXPECT_TRUE(fs::exists(scratch / "two_rail1.txt"));
+  EXPECT_FALSE(fs::exists(scratch / "two_rail2.txt"));
+  const std::vector<InputCase> again = read_input_cases(scratch / "two.inp");
+  ASSERT_EQ(again.size(), 2U);
+  for (const InputCase& c : again)
+    EXPECT_EQ(std::get<WheelRailRecord>(c).rail.file, "two_rail1.txt");
+}
+
 TEST(InpWriterModule1, ACompanionNeverReplacesAProfileTheCasesRead) {
   // The rail points' table would be named like the wheel's own profile file (a plain table of a
   // 1:20 cone): refused, nothing written.
