@@ -39,13 +39,20 @@ Forces solve_in_units(int ire, int units) {
   double veloc = 2000.0 * len, fn = 10000.0;
   cntc_setreferencevelocity(&ire, &icp, &veloc);
   cntc_setnormalforce(&ire, &icp, &fn);
-  const double body = units == CNTC_un_spck ? -1.0 : 1.0;
-  double cksi = body * 0.001, ceta = body * -0.0005, cphi = body * 0.0001 / len;
+  // The creepages as CONTACT takes them in every convention (the body sign is on outputs only).
+  double cksi = 0.001, ceta = -0.0005, cphi = 0.0001 / len;
   cntc_setcreepages(&ire, &icp, &cksi, &ceta, &cphi);
   cntc_calculate(&ire, &icp, &ierror);
   EXPECT_GE(ierror, 0);
   Forces f;
   cntc_getcontactforces(&ire, &icp, &f.fn, &f.fx, &f.fy, &f.mz);
+  // Read back with the body sign: SIMPACK's creepages are those of the wheel.
+  const double body = units == CNTC_un_spck ? -1.0 : 1.0;
+  double back[3] = {0.0, 0.0, 0.0};
+  cntc_getcreepages(&ire, &icp, &back[0], &back[1], &back[2]);
+  EXPECT_NEAR(back[0], body * cksi, 1e-15);
+  EXPECT_NEAR(back[1], body * ceta, 1e-15);
+  EXPECT_NEAR(back[2], body * cphi, 1e-12 * std::abs(cphi));
   cntc_finalize(&ire);
   return f;
 }

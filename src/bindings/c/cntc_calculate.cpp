@@ -42,9 +42,9 @@ int timed(Problem& p, Solve&& solve) {
   } catch (const GeometryError& e) {
     library().log(std::string("cntc_calculate: ") + e.what());
     code = CNTC_err_search;
-  } catch (const Error& e) {
+  } catch (const Error& e) {  // inconsistent settings: calculate has no input-error code
     library().log(std::string("cntc_calculate: ") + e.what());
-    code = CNTC_err_input;
+    code = CNTC_err_other;
   } catch (const std::exception& e) {
     library().log(std::string("cntc_calculate: internal error: ") + e.what());
     code = CNTC_err_other;
@@ -63,7 +63,7 @@ int calculate(Module3Problem& p) {
   }
   if (record.potential.ipotcn > 0 && !p.geometry_given) {
     library().log("cntc_calculate: no undeformed distance set (setundeformeddistc)");
-    return CNTC_err_input;
+    return CNTC_err_other;
   }
   record.case_number = p.cases + 1;
   record.digits.z = record.potential.ipotcn > 0 ? 2 : 0;
@@ -95,11 +95,23 @@ int calculate(Module1Problem& p) {
     library().log("cntc_calculate: no friction set (cntc_setfrictionmethod)");
     return CNTC_err_frclaw;
   }
+  // A transient sequence (T = 1, 2) carries its tractions on the grid of its first case.
+  const format::WheelRailDiscretisation& grid = record.discretisation;
+  const bool transient = record.digits.t == 1 || record.digits.t == 2;
+  if (transient && p.cases > 0 && p.result && record.digits.p != 2 &&
+      (grid.dx != p.sequence_dx || grid.ds != p.sequence_ds)) {
+    library().log(fmt::format(
+        "cntc_calculate: DX, DS = {}, {} mm changed within a transient sequence (was {}, {})",
+        grid.dx, grid.ds, p.sequence_dx, p.sequence_ds));
+    return CNTC_err_discr;
+  }
   record.case_number = p.cases + 1;
   if (record.digits.r >= 2) return 0;  // check only
   return timed(p, [&] {
     WheelRailSolution s = p.solver.solve(format::to_wheelrail_problem(record));
     ++p.cases;
+    p.sequence_dx = record.discretisation.dx;
+    p.sequence_ds = record.discretisation.ds;
     int code = 0;
     if (!s.converged) {
       library().log("cntc_calculate: " + s.message);
@@ -118,9 +130,9 @@ int locked_calculate(Problem& p) {
   return calculate(p);
 }
 
-void run(int* ire, int* icp, int* ierror, bool lock) {
+void run(int* ire, int* icp, int* ierror, bool lock, Access access, const char* routine) {
   int code = 0;
-  const Target t = open_target(ire, icp, Access::Settings, "cntc_calculate", &code);
+  const Target t = open_target(ire, icp, access, routine, &code);
   if (t.m3 != nullptr) code = lock ? locked_calculate(*t.m3) : calculate(*t.m3);
   if (t.m1 != nullptr) code = lock ? locked_calculate(*t.m1) : calculate(*t.m1);
   if (ierror != nullptr) *ierror = code;
@@ -129,15 +141,17 @@ void run(int* ire, int* icp, int* ierror, bool lock) {
 }  // namespace
 }  // namespace rollcontact::cntc
 
+using rollcontact::cntc::Access;
+
 CNTC_EXPORT void cntc_calculate(int* ire, int* icp, int* ierror) {
-  rollcontact::cntc::run(ire, icp, ierror, true);
+  rollcontact::cntc::run(ire, icp, ierror, true, Access::Settings, "cntc_calculate");
 }
 
 CNTC_EXPORT void cntc_calculate3(int* ire, int* icp, int* ierror) {
-  rollcontact::cntc::run(ire, icp, ierror, false);
+  rollcontact::cntc::run(ire, icp, ierror, false, Access::Module3, "cntc_calculate3");
 }
 
 CNTC_EXPORT void cntc_calculate1(int* ire, int* ierror) {
   int icp = -1;
-  rollcontact::cntc::run(ire, &icp, ierror, false);
+  rollcontact::cntc::run(ire, &icp, ierror, false, Access::Module1, "cntc_calculate1");
 }

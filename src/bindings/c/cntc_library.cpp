@@ -63,12 +63,12 @@ Module3Problem::Module3Problem() {
 }
 
 Module1Problem::Module1Problem() {
-  // A fresh wheel/rail problem: right wheel on a track, steady rolling with the vertical force
-  // given (the usual MBS call sequence sets these again), no profiles yet.
+  // A fresh wheel/rail problem (§5 "Default values"): right wheel on a track, steady rolling,
+  // the position prescribed (N = 0: setverticalforce sets N = 1), no profiles yet.
   format::ControlDigits& d = record.digits;
   d.p = 2;
   d.t = 3;
-  d.n = 1;
+  d.n = 0;
   d.d = 2;
   d.c = 2;
   d.a = 0;
@@ -87,10 +87,10 @@ std::string c_string(const char* s, const int* len) {
   return last == std::string::npos ? std::string{} : out.substr(0, last + 1);
 }
 
-void Library::initialize_first(int output_to_screen, const std::string& wrkdir,
+bool Library::initialize_first(int output_to_screen, const std::string& wrkdir,
                                const std::string& outdir, const std::string& expnam) {
   std::lock_guard lock(mutex_);
-  if (initialised_) return;
+  if (initialised_) return false;
   initialised_ = true;
   to_screen_ = output_to_screen == 1;
   namespace fs = std::filesystem;
@@ -106,6 +106,7 @@ void Library::initialize_first(int output_to_screen, const std::string& wrkdir,
       fmt::format("rollcontact CONTACT-compatible library, interface version {}", 2520);
   if (out_) out_ << banner << '\n';
   if (to_screen_) std::cout << banner << '\n';
+  return true;
 }
 
 int Library::create(int ire, int module) {
@@ -115,7 +116,14 @@ int Library::create(int ire, int module) {
     return -12;
   }
   std::lock_guard lock(mutex_);
-  if (elements_.count(ire) != 0) return 0;  // keeps its module (a warning in CONTACT)
+  if (const auto it = elements_.find(ire); it != elements_.end()) {
+    if (out_) {  // keeps its module, as CONTACT does
+      out_ << fmt::format(
+          "cntc_initialize: result element {} exists already (module {}); kept as it is\n", ire,
+          it->second->module);
+    }
+    return 0;
+  }
   if (static_cast<int>(elements_.size()) >= kMaxActiveElements) return -12;
   auto e = std::make_unique<ResultElement>();
   e->module = module;
@@ -159,24 +167,40 @@ void Library::log(const std::string& line) {
 int Library::check(int ire, int icp, Access access, int module) const {
   if (ire < 1 || ire > 999) return kBadIre;
   const bool m1 = module == 1;
+  const bool is_patch = icp >= 1 && icp <= kMaxIcp;
   switch (access) {
     case Access::Module3:
       if (m1) return kNotInModule1;
       return icp >= 1 && icp <= kMaxIcp ? 0 : kBadIcp;
-    case Access::Module1:
-    case Access::Module1Patch:
-    case Access::Module1Forces:
+    case Access::Module1:  // no icp argument: the whole problem
       return m1 ? 0 : kNotInModule3;
+    case Access::Module1Patch:
+      if (!m1) return kNotInModule3;
+      if (icp == -1) return kNeedsPatch;
+      return is_patch ? 0 : kBadIcp;
+    case Access::Module1Forces:
+      if (!m1) return kNotInModule3;
+      return icp == -1 || is_patch ? 0 : kBadIcp;
     case Access::Settings:
       if (m1) return icp == -1 ? 0 : kNoPatchAllowed;
-      return icp >= 1 && icp <= kMaxIcp ? 0 : kBadIcp;
+      return is_patch ? 0 : kBadIcp;
     case Access::Results:
       if (icp == -1) return kNeedsPatch;
-      return icp >= 1 && icp <= kMaxIcp ? 0 : kBadIcp;
-    case Access::Either:
-      return icp == -1 || (icp >= 1 && icp <= kMaxIcp) ? 0 : kBadIcp;
+      return is_patch ? 0 : kBadIcp;
+    case Access::Either:  // −1 is the whole wheel/rail problem; module 3 has problems 1..9 only
+      return (m1 && icp == -1) || is_patch ? 0 : kBadIcp;
   }
   return kBadIcp;
+}
+
+int Library::check_patch_exists(int icp, Access access, const ResultElement& e) const {
+  // Module 1: the patches are those of the last calculate (§1.3); getcontactlocation and
+  // getglobalforces answer zeros for the others themselves (§5 checklist).
+  if (e.module != 1 || icp < 1 || access == Access::Module1Patch || access == Access::Module1Forces)
+    return 0;
+  const Module1Problem* p = e.wheel_rail.get();
+  const int patches = p != nullptr && p->result ? static_cast<int>(p->result->patches.size()) : 0;
+  return icp <= patches ? 0 : kNoSuchPatch;
 }
 
 ResultElement* Library::element_or_create(int ire, int icp) {
@@ -198,6 +222,7 @@ Target Library::open(int ire, int icp, Access access, const char* routine, int* 
     ResultElement* e = ire >= 1 && ire <= 999 ? element_or_create(ire, icp) : nullptr;
     status =
         e == nullptr ? (ire < 1 || ire > 999 ? kBadIre : -12) : check(ire, icp, access, e->module);
+    if (status == 0) status = check_patch_exists(icp, access, *e);
     if (status == 0 && e->module == 3) {
       auto& slot = e->problems[static_cast<std::size_t>(icp)];
       if (!slot) slot = std::make_unique<Module3Problem>();
@@ -210,7 +235,13 @@ Target Library::open(int ire, int icp, Access access, const char* routine, int* 
       target.m1 = e->wheel_rail.get();
     }
   }
-  if (status != 0) {
+  if (status == kNoSuchPatch) {
+    log(
+        fmt::format("{}: ire = {} has no contact patch {} (code {}): the patches are those the "
+                    "last cntc_calculate found",
+                    routine, ire, icp, status));
+    if (code != nullptr) *code = status;
+  } else if (status != 0) {
     log(fmt::format("{}: access refused (code {}) for ire = {}, icp = {}: the routine is for {}",
                     routine, status, ire, icp, category_name(access)));
     if (code != nullptr) *code = status;

@@ -36,6 +36,17 @@ struct Units {
 /// Units for a CNTC_un_* code; false for an unknown code.
 bool units_for_code(int code, Units& units);
 
+/// Flags cntc_setflags stores and cntc_getflags returns that no solver reads here (§2.2): the
+/// sensitivities' and subsurface output digits, the debug switch, the input-file writing.
+struct StoredFlags {
+  int sens = 0;      ///< S2 (1988), [0, 3]
+  int sbsout = 0;    ///< O_s (1991), [0, 4], 3 becomes 2
+  int sbsfil = 0;    ///< A_s (1992), 0..2
+  int xflow = 0;     ///< X (1981): extended debug output on (1) or off
+  int wrtinp = 0;    ///< 2002, as given
+  int npot_max = 0;  ///< 1993 in module 3 (module 1 keeps it in its record)
+};
+
 /// One module-3 contact problem: the case as CONTACT's digits and blocks describe it, built by
 /// the setters; the solver that keeps its sequence; the last solution.
 struct Module3Problem {
@@ -49,6 +60,7 @@ struct Module3Problem {
   std::vector<model::SubsurfaceBlock> subs_blocks;  ///< subs_addblock
   std::vector<SubsurfaceResult> subs_results;       ///< subs_calculate, one per block
   std::array<double, 9> metadata{};                 ///< setmetadata (recorded only)
+  StoredFlags flags;
   double cpu_seconds = 0.0, wall_seconds = 0.0;
   std::mutex busy;  ///< held by calculate
   Module3Problem();
@@ -70,6 +82,8 @@ struct Module1Problem {
   /// subs_calculate: per patch (index icp − 1), one result per block.
   std::vector<std::vector<SubsurfaceResult>> subs_results;
   std::array<double, 9> metadata{};
+  StoredFlags flags;
+  double sequence_dx = 0.0, sequence_ds = 0.0;  ///< DX, DS of the last calculate [mm]
   double cpu_seconds = 0.0, wall_seconds = 0.0;
   std::mutex busy;  ///< held by calculate
   Module1Problem();
@@ -105,11 +119,13 @@ enum class Access {
 /// The internal codes of a refused access (§1.3).
 constexpr int kBadIre = -101, kNotInModule1 = -102, kNotInModule3 = -103, kBadIcp = -104,
               kNeedsPatch = -105, kNoPatchAllowed = -106;
+/// A module-1 patch number beyond the last calculate's patches (CNTC_err_icp).
+constexpr int kNoSuchPatch = -31;
 
 class Library {
  public:
-  /// cntc_initializefirst: opens <outdir><expnam>.out (once; later calls only return).
-  void initialize_first(int output_to_screen, const std::string& wrkdir, const std::string& outdir,
+  /// cntc_initializefirst: opens <outdir><expnam>.out (once; later calls only return false).
+  bool initialize_first(int output_to_screen, const std::string& wrkdir, const std::string& outdir,
                         const std::string& expnam);
   /// cntc_initialize: creates `ire` with module 1 or 3; −12 when 100 are active already.
   int create(int ire, int module);
@@ -131,6 +147,8 @@ class Library {
 
  private:
   int check(int ire, int icp, Access access, int module) const;
+  /// kNoSuchPatch when a module-1 routine names a patch the last calculate did not find.
+  int check_patch_exists(int icp, Access access, const ResultElement& e) const;
   ResultElement* element_or_create(int ire, int icp);
 
   std::mutex mutex_;

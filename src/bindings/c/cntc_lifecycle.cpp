@@ -12,9 +12,10 @@ CNTC_EXPORT void cntc_initializefirst(int* ifcver, int* ierror, int* ioutput, co
                                       const char* c_outdir, const char* c_expnam, int* len_wrkdir,
                                       int* len_outdir, int* len_expnam) {
   if (ifcver != nullptr) *ifcver = CNTC_IFCVER;
-  if (ierror != nullptr) *ierror = 0;
-  library().initialize_first(ioutput != nullptr ? *ioutput : 0, c_string(c_wrkdir, len_wrkdir),
-                             c_string(c_outdir, len_outdir), c_string(c_expnam, len_expnam));
+  const bool first =
+      library().initialize_first(ioutput != nullptr ? *ioutput : 0, c_string(c_wrkdir, len_wrkdir),
+                                 c_string(c_outdir, len_outdir), c_string(c_expnam, len_expnam));
+  if (first && ierror != nullptr) *ierror = 0;  // a repeat call leaves it as passed (§2.1)
 }
 
 CNTC_EXPORT void cntc_initializefirst_new(int* ifcver, int* ierror, int* ioutput,

@@ -29,8 +29,9 @@ struct PatchView {
   Target target;                          ///< the problem, for its settings
 };
 
-std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* routine) {
-  const Target t = open_target(ire, icp, Access::Results, routine);
+std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* routine,
+                                  Access access = Access::Results) {
+  const Target t = open_target(ire, icp, access, routine);
   if (!t) return std::nullopt;
   PatchView v;
   v.units = t.units();
@@ -91,7 +92,7 @@ using namespace rollcontact;
 using namespace rollcontact::cntc;
 
 CNTC_EXPORT void cntc_gethertzcontact(int* ire, int* icp, int* lenarr, double* values) {
-  const auto v = patch_of(ire, icp, "cntc_gethertzcontact");
+  const auto v = patch_of(ire, icp, "cntc_gethertzcontact", Access::Module3);
   if (!v || lenarr == nullptr || values == nullptr) return;
   const double len = v->units.length;
   const HertzReport& h = v->s->hertz;
@@ -115,8 +116,16 @@ CNTC_EXPORT void cntc_getnumelements(int* ire, int* icp, int* mx, int* my) {
 }
 
 CNTC_EXPORT void cntc_getgriddiscretization(int* ire, int* icp, double* dx, double* dy) {
-  const auto v = patch_of(ire, icp, "cntc_getgriddiscretization");
-  if (!v || dx == nullptr || dy == nullptr) return;
+  if (dx == nullptr || dy == nullptr) return;
+  if (icp != nullptr && *icp == -1) {  // module 1: the wheel/rail problem's DX, DS (category 7)
+    const Target t = open_target(ire, icp, Access::Either, "cntc_getgriddiscretization");
+    if (t.m1 == nullptr) return;
+    *dx = t.m1->record.discretisation.dx / t.m1->units.length;
+    *dy = t.m1->record.discretisation.ds / t.m1->units.length;
+    return;
+  }
+  const auto v = patch_of(ire, icp, "cntc_getgriddiscretization", Access::Either);
+  if (!v) return;
   *dx = v->s->grid.dx / v->units.length;
   *dy = v->s->grid.dy / v->units.length;
 }
@@ -330,6 +339,7 @@ CNTC_EXPORT void cntc_getparameters(int* ire, int* icp, int* itask, int* lenarr,
     const double alfa = fastsim ? mp[one_flx ? 2 : 1] : 0.0;
     const double beta = fastsim ? mp[one_flx ? 3 : 2] : 0.0;
     const bool layer = mdigit == 4;
+    const format::Damping& damping = t.m3 != nullptr ? t.m3->record.damping : t.m1->record.damping;
     out = {m.gg1 / pressure,
            m.gg2 / pressure,
            c.g / pressure,
@@ -347,11 +357,11 @@ CNTC_EXPORT void cntc_getparameters(int* ire, int* icp, int* itask, int* lenarr,
            layer ? mp[0] / pressure : 0.0,
            layer ? mp[1] / len : 0.0,
            tau_c0 / pressure,
-           layer ? mp[3] : 0.0,
-           0.0,
-           0.0,
-           0.0,
-           0.0};
+           layer ? mp[3] / (pressure / len) : 0.0,
+           damping.cdampn,
+           damping.cdampt,
+           damping.dfnmax,
+           damping.dftmax};
   } else if (*itask == 3) {
     const format::VariableFriction* vf = t.m1 != nullptr && t.m1->record.variable_friction.v != 0
                                              ? &t.m1->record.variable_friction

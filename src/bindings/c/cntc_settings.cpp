@@ -22,15 +22,17 @@ struct Common {
   format::Friction& friction;
   format::Materials& materials;
   Units& units;
+  StoredFlags& flags;
+  format::Damping& damping;
 };
 
 Common common(const Target& t) {
   if (t.m3 != nullptr) {
     auto& r = t.m3->record;
-    return {r.digits, r.solver, r.friction, r.materials, t.m3->units};
+    return {r.digits, r.solver, r.friction, r.materials, t.m3->units, t.m3->flags, r.damping};
   }
   auto& r = t.m1->record;
-  return {r.digits, r.solver, r.friction, r.materials, t.m1->units};
+  return {r.digits, r.solver, r.friction, r.materials, t.m1->units, t.m1->flags, r.damping};
 }
 
 int clamp(int v, int lo, int hi) {
@@ -118,20 +120,36 @@ void set_flag(const Target& t, int code, int value) {
     case CNTC_if_idebug:
       library().set_debug_level(value);
       return;
+    case CNTC_ic_sens:
+      c.flags.sens = clamp(value, 0, 3);
+      return;
+    case CNTC_ic_sbsout:
+      c.flags.sbsout = clamp(value, 0, 4) == 3 ? 2 : clamp(value, 0, 4);
+      return;
+    case CNTC_ic_sbsfil:
+      c.flags.sbsfil = value >= 0 && value <= 2 ? value : 0;
+      return;
+    case CNTC_ic_xflow:
+      c.flags.xflow = value > 0 ? 1 : 0;
+      return;
+    case CNTC_if_wrtinp:
+      c.flags.wrtinp = value;
+      return;
+    case CNTC_ic_ifmeth:
+      c.materials.conformal.if_meth = clamp(value, 0, 1);
+      return;
+    case CNTC_ic_ifvari:
+      c.materials.conformal.variant = clamp(value, 1, 4);
+      return;
+    case CNTC_ic_npomax:  // module 3: stored for getflags (module 1: its own flag above)
+      c.flags.npot_max = clamp(value, 100, 1000000);
+      return;
     case CNTC_ic_config:  // module 1 only
-    case CNTC_ic_npomax:
     case CNTC_ic_discns:  // module 3 grids come from setpotcontact/sethertzcontact
     case CNTC_ic_mater:   // M is set by setmaterialparameters
-    case CNTC_ic_sens:
-    case CNTC_ic_sbsout:
-    case CNTC_ic_sbsfil:
-    case CNTC_ic_xflow:
     case CNTC_if_licdbg:
     case CNTC_if_openmp:
-    case CNTC_if_wrtinp:
     case CNTC_if_timers:
-    case CNTC_ic_ifmeth:
-    case CNTC_ic_ifvari:
       return;
     default:
       library().log(fmt::format("cntc_setflags: unknown parameter code {} ignored", code));
@@ -200,6 +218,30 @@ bool get_flag(const Target& t, int code, int& value) {
       return true;
     case CNTC_if_ncase:
       value = t.m3 != nullptr ? t.m3->cases : t.m1->cases;
+      return true;
+    case CNTC_ic_sens:
+      value = c.flags.sens;
+      return true;
+    case CNTC_ic_sbsout:
+      value = c.flags.sbsout;
+      return true;
+    case CNTC_ic_sbsfil:
+      value = c.flags.sbsfil;
+      return true;
+    case CNTC_ic_xflow:
+      value = c.flags.xflow;
+      return true;
+    case CNTC_if_wrtinp:
+      value = c.flags.wrtinp;
+      return true;
+    case CNTC_ic_ifmeth:
+      value = c.materials.conformal.if_meth;
+      return true;
+    case CNTC_ic_ifvari:
+      value = c.materials.conformal.variant;
+      return true;
+    case CNTC_ic_npomax:
+      value = c.flags.npot_max;
       return true;
     default:
       return false;
@@ -350,9 +392,17 @@ CNTC_EXPORT void cntc_setmaterialparameters(int* ire, int* icp, int* mdigit, int
   const int m = *mdigit;
   static constexpr int needed[] = {4, 8, 8, 7, 8, 7, 4, 4};
   if (m >= 10 && m <= 12) {
-    // Damping digit M2: only "no damping" and "keep" without parameters here.
-    if (m == 12) return reject(name, "damping M2 = 2 not supported yet");
-    if (*nparam > 1) return reject(name, fmt::format("M2 = {} takes 0 or 1 parameters", m - 10));
+    // Damping digit M2 (the material model M stays): 0 none, 1 keep, 2 the four parameters.
+    // Module 1 refuses a case where the damping would act (docs/decisions.md), as the .inp route.
+    if (m == 12) {
+      if (*nparam != 4) return reject(name, "M2 = 2 needs nparam = 4");
+      if (rparam == nullptr) return reject(name, "null array");
+      c.damping = {true, rparam[0], rparam[1], rparam[2], rparam[3]};  // s, s, N/s, N/s
+    } else if (*nparam > 1) {
+      return reject(name, fmt::format("M2 = {} takes 0 or 1 parameters", m - 10));
+    } else if (m == 10) {
+      c.damping = {};
+    }
     c.digits.m2 = m - 10;
     return;
   }
@@ -368,7 +418,17 @@ CNTC_EXPORT void cntc_setmaterialparameters(int* ire, int* icp, int* mdigit, int
   mat.gg2 = rparam[3] * u.pressure();
   mat.model_params = {};
   for (int k = 4; k < *nparam; ++k) mat.model_params[static_cast<std::size_t>(k - 4)] = rparam[k];
-  if (m == 2) mat.model_params[0] *= u.length * u.length * u.length;  // flx [L³/F]
+  auto& mp = mat.model_params;
+  if (m == 2) {  // FLX [L³/F], K0_MF, ALFAMF, BETAMF, each at least 1e-6
+    for (std::size_t k = 0; k < 4; ++k) mp[k] = std::max(1e-6, mp[k]);
+    mp[0] *= u.length * u.length * u.length;
+  }
+  if (m == 4) {  // GG3 [P], LAYTHK [L], TAU_C0 [P] (≥ 1e10: no plasticity), K_TAU [F/L³]
+    mp[0] = std::max(1e-6, mp[0] * u.pressure());
+    mp[1] = std::max(1e-9, mp[1] * u.length);
+    mp[2] = mp[2] >= 1e10 ? 0.0 : mp[2] * u.pressure();
+    mp[3] *= u.pressure() / u.length;
+  }
   c.digits.m = m;
   // MAXOUT follows the coupling of the bodies (§2.2).
   const double ak = std::abs(difference_parameter(mat));
@@ -589,9 +649,10 @@ CNTC_EXPORT void cntc_setcreepages(int* ire, int* icp, double* vx, double* vy, d
   rollcontact::format::Kinematics& k = p->record.kinematics;
   const Units& u = p->units;
   const bool shift = p->record.digits.t == 1;
-  // Shifts [L] and a rotation [rad], or creepages [-] and spin [A/L]; the body sign as on
-  // output, so that a value set is the value read back.
-  k.cksi = u.body * *vx * (shift ? u.length : 1.0);
-  k.ceta = u.body * *vy * (shift ? u.length : 1.0);
-  k.cphi = u.body * *phi / (shift ? 1.0 : u.length);
+  // Shifts [L] and a rotation [rad], or creepages [-] and spin [A/L]. The body sign of the
+  // unit convention applies to outputs only (§1.4): an MBS code passes CONTACT the creepages
+  // as they are in SIMPACK units too, and gets the forces on the wheel back.
+  k.cksi = *vx * (shift ? u.length : 1.0);
+  k.ceta = *vy * (shift ? u.length : 1.0);
+  k.cphi = *phi / (shift ? 1.0 : u.length);
 }

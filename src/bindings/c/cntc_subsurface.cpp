@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 
 #include "bindings/c/cntc_export.hpp"
 #include "bindings/c/cntc_library.hpp"
@@ -110,8 +111,17 @@ CNTC_EXPORT void subs_addblock(int* ire, int* icp, int* iblk, int* isubs, int* n
 }
 
 CNTC_EXPORT void subs_calculate(int* ire, int* icp, int* ierror) {
-  const Target t = open_target(ire, icp, Access::Either, "subs_calculate");
-  int code = t ? 0 : CNTC_err_icp;
+  int code = 0;
+  const Target t = open_target(ire, icp, Access::Either, "subs_calculate", &code);
+  // Like cntc_calculate: one thread per problem at a time, 305 for another (§1.5).
+  std::unique_lock<std::mutex> busy;
+  if (t) {
+    busy = std::unique_lock(t.m3 != nullptr ? t.m3->busy : t.m1->busy, std::try_to_lock);
+    if (!busy.owns_lock()) {
+      if (ierror != nullptr) *ierror = 305;
+      return;
+    }
+  }
   try {
     if (t.m3 != nullptr && t.m3->result) {
       const model::Bodies bodies = format::to_patch_problem(t.m3->record).bodies;

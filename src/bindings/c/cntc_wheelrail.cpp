@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -99,6 +100,7 @@ CNTC_EXPORT void cntc_settrackdimensions(int* ire, int* ztrack, int* nparam, dou
     r.has_massless_rail = true;
     r.massless_rail = {rparam[0] / len, rparam[1], rparam[2] / len, rparam[3],
                        n >= 5 ? rparam[4] * len : 1.0};
+    r.digits.z = 3;  // as CONTACT stores it for every Z > 0
     return;
   }
   int k = 0;
@@ -234,10 +236,11 @@ CNTC_EXPORT void cntc_setprofileinputfname(int* ire, const char* c_fname, int* l
   if (path.is_relative()) path = library().working_folder() / path;
   spec.file = file;
   spec.path = path.string();
-  if (itype != 0 && itype != 1) {  // from the extension: .prw, .whl, .slcw are wheels
-    const std::string ext = path.extension().string();
-    itype =
-        ext == ".prw" || ext == ".whl" || ext == ".slcw" || ext == ".PRW" || ext == ".WHL" ? 1 : 0;
+  if (itype != 0 && itype != 1) {  // from the extension, any case: .prw, .whl, .slcw are wheels
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    itype = ext == ".prw" || ext == ".whl" || ext == ".slcw" ? 1 : 0;
   }
   const bool is_wheel = itype == 1;
   store_profile(*p, is_wheel, std::move(spec),
