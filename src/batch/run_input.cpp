@@ -195,6 +195,7 @@ CaseOutput render_case(const format::InputCase& input, const CaseOutcome& outcom
     format::write_wheelrail_case_report(report, *m1, outcome.problem, outcome.wheelrail);
     if (m1->digits.a >= 1)
       format::write_wheelrail_mat_files(output_stem, *m1, outcome.problem, outcome.wheelrail);
+    format::write_wheelrail_subs_files(output_stem, *m1, outcome.problem, outcome.wheelrail);
     out.json = format::wheelrail_case_to_json(outcome.problem, outcome.wheelrail).dump(2);
   } else if (outcome.solved) {
     format::write_case_report(report, *m3, outcome.solution);

@@ -66,7 +66,7 @@ void write_problem_echo(std::ostream& os, const WheelRailRecord& r, const WheelR
   report::write_wheelrail_problem_lines(os, r);
   report::write_wheelrail_input_blocks(os, r, s.material);
   const RailDeflection& rd = s.rail_deflection;
-  if (rd.active && (d.z == 2 || d.z == 3)) {  // with the rail deviations (spec §2.8)
+  if (rd.active) {  // F = 3, in every case (outputs.md §3.8), also those that keep the track
     line(os, "");
     line(os, " MASSLESS RAIL DEFLECTION");
     line(os, "     KY_RAIL     DY_DEFL     FY_RAIL     KZ_RAIL     DZ_DEFL     FZ_RAIL");

@@ -41,14 +41,16 @@ void append_block(std::string& out, const SubsurfaceResult& r, bool tensor) {
   }
 }
 
+std::string format_blocks(const std::vector<SubsurfaceResult>& blocks, bool tensor) {
+  std::string out;
+  for (const SubsurfaceResult& r : blocks) append_block(out, r, tensor);
+  return out;
+}
+
 }  // namespace
 
 std::string format_subs(const CaseRecord& problem, const Solution& solution) {
-  std::string out;
-  for (const SubsurfaceResult& r : solution.subsurface) {
-    append_block(out, r, problem.subsurface.matfil >= 2);
-  }
-  return out;
+  return format_blocks(solution.subsurface, problem.subsurface.matfil >= 2);
 }
 
 std::filesystem::path write_subs_file(const std::filesystem::path& output_stem,
@@ -60,6 +62,22 @@ std::filesystem::path write_subs_file(const std::filesystem::path& output_stem,
   path += fmt::format(".{:04d}.subs", problem.case_number);
   write_file_atomically(path, format_subs(problem, solution));
   return path;
+}
+
+std::vector<std::filesystem::path> write_wheelrail_subs_files(
+    const std::filesystem::path& output_stem, const WheelRailRecord& record,
+    const CaseRecord& identity, const WheelRailSolution& solution) {
+  std::vector<std::filesystem::path> written;
+  if (record.digits.s < 1 || record.subsurface.matfil < 1) return written;
+  for (std::size_t k = 0; k < solution.patches.size(); ++k) {
+    const Solution& patch = solution.patches[k].solution;
+    if (patch.subsurface.empty()) continue;
+    std::filesystem::path path = output_stem;
+    path += fmt::format(".{:04d}{}.subs", identity.case_number, static_cast<char>('a' + k % 26));
+    write_file_atomically(path, format_blocks(patch.subsurface, record.subsurface.matfil >= 2));
+    written.push_back(path);
+  }
+  return written;
 }
 
 }  // namespace rollcontact::format

@@ -253,5 +253,36 @@ TEST(WheelRailReportLayout, OutputFivePrintsEachPatchsElementTable) {
   EXPECT_NEAR(a.wx, b.wx, 1e-3 * std::abs(a.wx) + 1e-9);  // ξ − φ·y: the same along a row
 }
 
+/// F = 3: the massless rail's block in every case (spec/outputs.md §3.8), also in a case that
+/// keeps the track (Z = 0) — there it was missing while the JSON carried the deflections.
+TEST(WheelRailReportLayout, MasslessRailDeflectionInEveryCase) {
+  const fs::path repo = fs::path(ROLLCONTACT_TEST_DATA_DIR) / ".." / ".." / "examples";
+  const test_support::ScratchDir scratch("rollcontact_layout_massless");
+  const fs::path& dir = scratch.path();
+  fs::create_directories(dir / "profiles");
+  for (const char* f : {"MBench_UIC60_v3.prr", "MBench_S1002_v3.prw"})
+    fs::copy_file(repo / "profiles" / f, dir / "profiles" / f);
+  std::ifstream in(repo / "massless_rail.inp");
+  std::string text, line;
+  while (std::getline(in, line)) {
+    if (line.rfind("  0 MODULE", 0) == 0) break;
+    text += line + "\n";
+  }
+  // A third case that keeps the track and the rail's springs.
+  text +=
+      "  1 MODULE\n 1203130\n 0111002\n 0100321\n"
+      "  0.0  9.0  10000. -0.01010113 0.0216  0.0\n"
+      " 2000. 0.0    0.0   0.0        0.0  -4.24775610\n  0 MODULE\n";
+  std::ofstream(dir / "case.inp") << text;
+  const RunResult r = run_input_file(dir / "case.inp", RunOptions{});
+  ASSERT_EQ(r.cases.size(), 3U);
+  std::ifstream out(dir / "case.out");
+  int blocks = 0;
+  for (std::string l; std::getline(out, l);) blocks += l == " MASSLESS RAIL DEFLECTION";
+  EXPECT_EQ(blocks, 3);
+  ASSERT_TRUE(r.cases[2].solved) << r.cases[2].error;
+  EXPECT_GT(r.cases[2].wheelrail.rail_deflection.dz_mm, 0.05);
+}
+
 }  // namespace
 }  // namespace rollcontact::batch
