@@ -52,6 +52,13 @@ int convert(const ConvertSettings& s) {
                      "convert needs one .toml and one .inp file (e.g. convert case.inp "
                      "case.toml, or convert case.toml case.inp)");
   }
+  std::error_code ec;
+  if (std::filesystem::exists(out, ec) && std::filesystem::equivalent(in, out, ec)) {
+    throw InputError(s.output, 0,
+                     fmt::format("is the input {} itself (a link to it); the output never "
+                                 "replaces the input",
+                                 s.input));
+  }
   if (!is_toml(out)) {
     // TOML -> .inp: module-3 and wheel/rail cases (profiles given as points become tables
     // beside the .inp file).

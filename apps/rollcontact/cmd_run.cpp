@@ -178,19 +178,38 @@ std::vector<std::size_t> costliest_first(const std::vector<std::string>& inputs)
   return order;
 }
 
-/// Two inputs of the same name would write the same outputs into one -o folder.
+/// Several inputs: two with the same output stem (the same name in one -o folder, or x.inp and
+/// x.toml side by side) would write the same outputs, and one input's report or JSON must not
+/// replace another input (run x.inp x.json). Checked before anything runs.
 void refuse_clashing_outputs(const RunSettings& settings) {
-  if (settings.output_dir.empty()) return;  // each next to its input
-  std::vector<std::string> stems;
+  namespace fs = std::filesystem;
+  std::vector<std::pair<fs::path, std::string>> stems;  // output stem, its input
   for (const std::string& input : settings.inputs) {
-    const std::string stem = std::filesystem::path(input).stem().string();
-    if (std::find(stems.begin(), stems.end(), stem) != stems.end())
-      throw InputError(input, 0,
-                       fmt::format("another input named {} writes {}.out into the same output "
-                                   "folder {}",
-                                   stem, stem, settings.output_dir));
-    stems.push_back(stem);
+    const fs::path in(input);
+    const fs::path dir =
+        settings.output_dir.empty() ? in.parent_path() : fs::path(settings.output_dir);
+    std::error_code ec;
+    const fs::path stem = fs::weakly_canonical(dir.empty() ? "." : dir, ec) / in.stem();
+    for (const auto& [other, other_input] : stems)
+      if (other == stem)
+        throw InputError(input, 0,
+                         fmt::format("{} writes its outputs to {}.out and .json as well; run the "
+                                     "two one after the other, or rename one",
+                                     other_input, stem.string()));
+    stems.emplace_back(stem, input);
   }
+  for (const std::string& input : settings.inputs)
+    for (const auto& [stem, writer] : stems)
+      for (const char* ext : {".out", ".json"}) {
+        fs::path out = stem;
+        out += ext;
+        std::error_code ec;
+        if (fs::exists(input, ec) && fs::exists(out, ec) && fs::equivalent(input, out, ec))
+          throw InputError(input, 0,
+                           fmt::format("the run of {} would replace this input with its {} "
+                                       "output; rename it or write elsewhere with -o DIR",
+                                       writer, ext));
+      }
 }
 
 /// Several files on --threads workers, each file on one thread; one line per file at the end,

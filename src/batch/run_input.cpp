@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -460,21 +461,68 @@ void prepare_output_dir(const std::filesystem::path& dir) {
     throw InputError(shown.string(), 0, "cannot write to the output folder");
 }
 
-/// An output never replaces the input (an input named x.out or x.json would be overwritten by
-/// the report of its own run).
-void refuse_overwriting_input(const std::filesystem::path& input,
-                              const std::filesystem::path& stem) {
+/// True when `file` is a name a run with output stem `stem` writes: <stem>.out, <stem>.json,
+/// <stem>.<nnnn>.mat/.subs and module 1's <stem>.<nnnn><letter>.mat/.subs.
+bool is_output_name(const std::filesystem::path& file, const std::filesystem::path& stem) {
   namespace fs = std::filesystem;
-  for (const char* ext : {".out", ".json"}) {
-    fs::path out = stem;
-    out += ext;
-    std::error_code ec;
-    if (fs::exists(out, ec) && fs::equivalent(out, input, ec)) {
+  std::error_code ec;
+  const fs::path dir =
+      fs::weakly_canonical(file.parent_path().empty() ? "." : file.parent_path(), ec);
+  const fs::path out_dir =
+      fs::weakly_canonical(stem.parent_path().empty() ? "." : stem.parent_path(), ec);
+  if (ec || dir != out_dir) return false;
+  const std::string name = file.filename().string(), prefix = stem.filename().string() + ".";
+  if (name.rfind(prefix, 0) != 0) return false;
+  const std::string rest = name.substr(prefix.size());
+  if (rest == "out" || rest == "json") return true;
+  std::size_t digits = 0;
+  while (digits < rest.size() && std::isdigit(static_cast<unsigned char>(rest[digits]))) ++digits;
+  if (digits < 4) return false;
+  std::string tail = rest.substr(digits);
+  if (!tail.empty() && std::islower(static_cast<unsigned char>(tail[0])) && tail[0] != '.')
+    tail = tail.substr(1);
+  return tail == ".mat" || tail == ".subs";
+}
+
+/// The files a case reads besides the input file itself: profiles (and each slice of a slices
+/// file), influence coefficients (C=9).
+std::vector<std::filesystem::path> files_read(const std::vector<format::InputCase>& cases) {
+  std::vector<std::filesystem::path> files;
+  for (const format::InputCase& c : cases) {
+    if (const auto* m3 = std::get_if<format::CaseRecord>(&c)) {
+      if (!m3->materials.influence_file.empty()) files.emplace_back(m3->materials.influence_file);
+      continue;
+    }
+    const auto& w = std::get<format::WheelRailRecord>(c);
+    for (const format::ProfileSpec* ps : {&w.rail, &w.wheel}) {
+      if (!ps->path.empty()) files.emplace_back(ps->path);
+      if (ps->sliced)
+        for (const Profile& slice : ps->slices->slices)
+          if (!slice.file.empty()) files.emplace_back(slice.file);
+    }
+  }
+  return files;
+}
+
+/// An output never replaces an input: the input file (x.out or x.json would be overwritten by the
+/// report of its own run) or a file its cases read (a profile named like an output).
+void refuse_overwriting_inputs(const std::filesystem::path& input,
+                               const std::filesystem::path& stem,
+                               const std::vector<format::InputCase>& cases) {
+  std::vector<std::filesystem::path> inputs = files_read(cases);
+  inputs.insert(inputs.begin(), input);
+  for (const std::filesystem::path& file : inputs) {
+    if (!is_output_name(file, stem)) continue;
+    if (file == input)
       throw InputError(input.string(), 0,
                        fmt::format("the output {} would replace this input; rename the input "
                                    "(e.g. to .inp) or write elsewhere with -o DIR",
-                                   out.string()));
-    }
+                                   file.string()));
+    throw InputError(input.string(), 0,
+                     fmt::format("the outputs of this run ({}.out, .json, .mat, .subs) would "
+                                 "replace the input {} that it reads; rename that file or write "
+                                 "elsewhere with -o DIR",
+                                 stem.string(), file.string()));
   }
 }
 
@@ -501,9 +549,10 @@ RunResult run_input_file(const std::filesystem::path& input, const RunOptions& o
   const std::filesystem::path dir =
       options.output_dir.empty() ? input.parent_path() : options.output_dir;
   const std::filesystem::path stem = dir / input.stem();
-  refuse_overwriting_input(input, stem);
+  if (is_output_name(input, stem)) refuse_overwriting_inputs(input, stem, {});
   const auto start = std::chrono::steady_clock::now();
   std::vector<format::InputCase> problems = read_input_file(input);
+  refuse_overwriting_inputs(input, stem, problems);
   validate_cases(problems);
   const double read_seconds = seconds_since(start);
   // One process checks (and creates) the folder; the others wait for it before they write.

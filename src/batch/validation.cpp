@@ -130,8 +130,10 @@ ExampleResult validate_example(const ExampleFiles& example, const std::filesyste
   }
 
   if (!run.input_error.empty()) {
-    result.run_error = run.input_error;
-    mark_all(result, reference, CaseStatus::NotSupported, result.run_error);
+    // An example the reader refuses (file:line in the message) compares nothing: a failure,
+    // not a feature still missing.
+    result.run_error = "input error: " + run.input_error;
+    mark_all(result, reference, CaseStatus::Failed, result.run_error);
   } else if (!run.failure.empty()) {
     result.run_error = run.failure;
     mark_all(result, reference, CaseStatus::Failed, result.run_error);

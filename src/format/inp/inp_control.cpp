@@ -208,7 +208,9 @@ Module1Words read_control_words_module1(InpStream& in) {
   reject_polach(in, l2, d);
   check_digit(in, l2, "L", d.l, {0, 1, 2, 3, 4, 6});
   check_digit(in, l2, "C", d.c, range(0, 4));
+  check_digit(in, l2, "M", d.m, range(0, 7));
   check_digit(in, l2, "Z", d.z, range(0, 3));
+  check_digit(in, l2, "E", d.e, range(0, 5));
   decode_m2_gapwgt(in, w2, l2, d);
 
   // Word 3: X H G I A O W R.
@@ -218,8 +220,10 @@ Module1Words read_control_words_module1(InpStream& in) {
   check_digit(in, l3, "X", d.x, range(0, 1));
   check_digit(in, l3, "H", d.h, {0, 1, 3});
   check_digit(in, l3, "G", d.g, range(0, 5));
+  check_digit(in, l3, "I", d.i, range(0, 3));
   check_digit(in, l3, "A", d.a, range(0, 2));
   check_digit(in, l3, "O", d.o, range(0, 5));
+  check_digit(in, l3, "R", d.r, range(0, 3));
 
   read_debug_word(in, d, out.lines[3]);
   return out;

@@ -82,7 +82,8 @@ std::size_t lost_text_column(std::string_view line) {
   const std::string_view kept = line.substr(0, kInpLineLength);
   if (significant_text(kept).size() < kept.size()) return 0;  // a comment runs past the limit
   const std::size_t k = line.find_first_not_of(" \t\r", kInpLineLength);
-  return k == std::string_view::npos ? 0 : k + 1;
+  if (k == std::string_view::npos || line[k] == '%') return 0;  // blanks, or a comment
+  return k + 1;
 }
 
 }  // namespace
@@ -205,16 +206,25 @@ void InpStream::fill_array(std::size_t n, std::string_view what, std::string_vie
                              std::to_string(k) + " of " + std::to_string(n) + " values read)");
     }
     const int line = static_cast<int>(next_) + 1;
-    const auto split = split_words(significant_text(lines_[next_]), kArrayWordLimit);
+    const auto split = split_words(significant_text(lines_[next_]), kArrayWordLimit + 1);
     ++next_;
     last_line_ = line;
-    for (std::size_t w = 0; w < split.words.size() && k < n; ++w, ++k) {
+    const std::size_t used = std::min(split.words.size(), kArrayWordLimit);
+    for (std::size_t w = 0; w < used && k < n; ++w, ++k) {
       if (split.words[w].quoted || !parse(k, split.words[w].text)) {
         fail(line,
              "expected " + std::string(kind) + " for value " + std::to_string(k + 1) + " of " +
                  std::string(what),
              split.words[w].text);
       }
+    }
+    // CONTACT reads at most 50 words of an array line: values beyond would be lost silently.
+    if (split.words.size() > kArrayWordLimit && k < n) {
+      fail(line,
+           "more than " + std::to_string(kArrayWordLimit) + " values on one line of " +
+               std::string(what) + ": CONTACT reads " + std::to_string(kArrayWordLimit) +
+               " per line and would lose the rest; continue on the next line",
+           split.words[kArrayWordLimit].text);
     }
   }
 }

@@ -76,6 +76,10 @@ TEST(BoundedReading, TextPastColumn256IsAnErrorAtItsLineAndColumn) {
   std::string commented = file_text(kRepoExamples / "hertz_normal.inp");
   commented.insert(commented.find('\n', commented.find("1000.0")), "  %" + std::string(300, '-'));
   EXPECT_NO_THROW((void)read_inp_string(commented, "comment.inp"));
+  // A comment that starts past column 256 loses nothing either (CONTACT cuts the line there).
+  std::string late = file_text(kRepoExamples / "hertz_normal.inp");
+  late.insert(late.find('\n', late.find("1000.0")), std::string(280, ' ') + "% a late comment");
+  EXPECT_NO_THROW((void)read_inp_string(late, "late.inp"));
 }
 
 TEST(BoundedReading, AMissingValueIsPointedAtItsLine) {

@@ -288,14 +288,23 @@ TEST(InpStreamArrays, ArraysFillFromManyLinesWithCommentsBetween) {
   EXPECT_EQ(in.read_integers(1, "next"), std::vector<int>{9});
 }
 
-TEST(InpStreamArrays, AtMostFiftyWordsPerLineAreUsed) {
+TEST(InpStreamArrays, MoreThanFiftyValuesOnALineAreAnError) {
+  // CONTACT reads 50 words of an array line: values 51.. would be lost and the rest shifted.
   std::string line;
   for (int k = 1; k <= 60; ++k) line += std::to_string(k) + " ";
   InpStream in(line + "\n 100 101\n", "t.inp");
-  const auto v = in.read_integers(52, "list");
+  try {
+    (void)in.read_integers(52, "list");
+    FAIL() << "60 values on one line were read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 1);
+    EXPECT_EQ(e.offending(), "51");
+    EXPECT_NE(e.message().find("more than 50 values on one line of list"), std::string::npos);
+  }
+  // An array that ends within the first 50 words ignores what follows (a label).
+  InpStream short_line(line + "\n", "t.inp");
+  const auto v = short_line.read_integers(50, "list");
   EXPECT_EQ(v[49], 50);
-  EXPECT_EQ(v[50], 100);  // words 51..60 of line 1 are not seen
-  EXPECT_EQ(v[51], 101);
 }
 
 TEST(InpStreamArrays, AngleEntriesInMixedArrays) {

@@ -115,6 +115,7 @@ constexpr MalformedCase kCases[] = {
     {"betapl_above_1.inp", 14, "BETAPL = 1.5 outside [0, 1]", false},
     {"viscoelastic_chi.inp", 4, "M=1 (viscoelastic) requires rolling direction CHI = 0", false},
     {"c4_variant_5.inp", 9, "VARIANT = 5 outside 1..4", false},
+    {"array_51_words.inp", 28, "more than 50 values on one line of", false},
     {"z1_first_case.inp", 4, "Z=1 uses the stored undeformed distance, but no IBASE block was read",
      false},
     // Module 1 (wheel/rail); profiles in malformed/profiles/.
@@ -129,6 +130,10 @@ constexpr MalformedCase kCases[] = {
     {"m1_first_case_z0.inp", 4,
      "Z=0 keeps the rail profile, but none was read for result element 0", false},
     {"m1_digit_b2.inp", 3, "digit B=2 is not a valid value (0, 1, 5, 6)", false},
+    {"m1_digit_e9.inp", 4, "digit E=9 is not a valid value (0..5)", false},
+    {"m1_digit_m8.inp", 4, "digit M=8 is not a valid value (0..7)", false},
+    {"m1_digit_i9.inp", 5, "digit I=9 is not a valid value (0..3)", false},
+    {"m1_digit_r9.inp", 5, "digit R=9 is not a valid value (0..3)", false},
     {"m1_nomradw_zero.inp", 13, "NOMRADW = 0 must be at least 0.001", false},
     {"m1_mirrory_2.inp", 11, "MIRRORY = 2 outside -1..1", false},
     {"m1_slcs_with_gaught.inp", 11, "a rail slices file (.slcs) requires GAUGHT ≤ 0", false},

@@ -1,0 +1,67 @@
+# Outputs never replace an input (exit status 2, the inputs unchanged, nothing run):
+#  - `run x.inp x.json`: x.inp's JSON would be x.json (another input of the same run);
+#  - `run x.inp x.toml`: both write x.out and x.json;
+#  - a profile named like an output of its own run (wr.inp reading the rail profile wr.out);
+#  - `convert x.inp link.toml` where link.toml is a link to x.inp.
+# Arguments: -DCLI=<rollcontact> -DEXAMPLES=<repository examples folder> -DWORK=<scratch folder>.
+
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
+file(COPY "${EXAMPLES}/hertz_normal.inp" DESTINATION "${WORK}")
+file(RENAME "${WORK}/hertz_normal.inp" "${WORK}/x.inp")
+file(WRITE "${WORK}/x.json" "{\"keep\": true}\n")
+file(COPY "${EXAMPLES}/toml/hertz_normal.toml" DESTINATION "${WORK}")
+file(RENAME "${WORK}/hertz_normal.toml" "${WORK}/x.toml")
+
+function(expect_refused what message)
+  execute_process(COMMAND ${ARGN} WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc
+                  OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2)
+    message(FATAL_ERROR "${what}: exit status ${rc}, expected 2\n${out}\n${err}")
+  endif()
+  if(NOT err MATCHES "${message}")
+    message(FATAL_ERROR "${what}: the message does not say \"${message}\":\n${err}")
+  endif()
+  if(EXISTS "${WORK}/x.out")
+    message(FATAL_ERROR "${what}: a report was written")
+  endif()
+endfunction()
+
+expect_refused("run x.inp x.json" "writes its outputs to .*x.out and .json as well" ${CLI} run -q
+               x.inp x.json)
+file(READ "${WORK}/x.json" json)
+if(NOT json STREQUAL "{\"keep\": true}\n")
+  message(FATAL_ERROR "run x.inp x.json replaced x.json")
+endif()
+file(REMOVE "${WORK}/x.json")
+expect_refused("run x.inp x.toml" "writes its outputs to .*x.out" ${CLI} run -q x.inp x.toml)
+
+# A rail profile (a plain table, a 300 mm arc) named wr.out, read by wr.inp.
+set(table "")
+foreach(k RANGE 0 60)
+  math(EXPR y "${k} - 30")
+  math(EXPR z "${y} * ${y} * 100000 / 600")  # z = y²/600 mm, in units of 1e-5 mm
+  string(APPEND table "${y} ${z}e-5\n")
+endforeach()
+file(WRITE "${WORK}/wr.out" "${table}")
+file(READ "${EXAMPLES}/massless_rail.inp" inp)
+string(REPLACE "'profiles/MBench_UIC60_v3.prr'" "'wr.out'" inp "${inp}")
+string(REPLACE "'profiles/MBench_S1002_v3.prw'" "'${EXAMPLES}/profiles/MBench_S1002_v3.prw'" inp
+       "${inp}")
+file(WRITE "${WORK}/wr.inp" "${inp}")
+expect_refused("a profile named like an output" "would replace the input wr.out" ${CLI} run -q
+               wr.inp)
+file(READ "${WORK}/wr.out" after)
+if(NOT after STREQUAL table)
+  message(FATAL_ERROR "the profile wr.out was replaced")
+endif()
+
+file(CREATE_LINK "${WORK}/x.inp" "${WORK}/link.toml" SYMBOLIC)
+file(READ "${WORK}/x.inp" before)
+expect_refused("convert onto a link to the input" "is the input x.inp itself" ${CLI} convert -q
+               x.inp link.toml)
+file(READ "${WORK}/x.inp" after)
+if(NOT after STREQUAL before)
+  message(FATAL_ERROR "convert replaced its input through a link")
+endif()
+file(REMOVE_RECURSE "${WORK}")
