@@ -128,6 +128,8 @@ void check_coulomb_values(InpStream& in, FrictionValues& fv, int line_fstat, int
 void read_friction_memory(InpStream& in, Friction& friction) {
   const GroupValues g = in.read_group({{"MEMDST", kReal}, {"MEM_S0", kReal}},
                                       "the friction memory line (MEMDST MEM_S0)");
+  require_at_least(in, g.line(0), "MEMDST", g.real(0), 0.0);
+  require_at_least(in, g.line(1), "MEM_S0", g.real(1), 0.0);
   friction.memdst = g.real(0);
   friction.mem_s0 = g.real(1);
 }
@@ -198,6 +200,13 @@ void read_heat_lines(InpStream& in, bool with_betapl, HeatParameters& heat) {
   const GroupValues h2 =
       in.read_group({{"BKTEMP2", kReal}, {"HEATCP2", kReal}, {"LAMBDA2", kReal}, {"DENS2", kReal}},
                     "the heat line of body 2 (BKTEMP2 HEATCP2 LAMBDA2 DENS2)");
+  // Heat capacity, conductivity and density divide the flash temperatures: positive.
+  for (const GroupValues* h : {&h1, &h2}) {
+    const char* body = h == &h1 ? "1" : "2";
+    require_positive(in, h->line(1), fmt::format("HEATCP{}", body), h->real(1));
+    require_positive(in, h->line(2), fmt::format("LAMBDA{}", body), h->real(2));
+    require_positive(in, h->line(3), fmt::format("DENS{}", body), h->real(3));
+  }
   heat.bktemp1 = h1.real(0);
   heat.heatcp1 = h1.real(1);
   heat.lambda1 = h1.real(2);

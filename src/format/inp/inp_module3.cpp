@@ -88,11 +88,12 @@ PotentialLines read_potential_contact(InpStream& in, PotentialContact& pc) {
   pc.values = {v.real(2), v.real(3), v.real(4), four ? v.real(5) : 0.0};
   if (ipotcn > 0) {
     const GridExtent ext = grid_extent(pc);
-    if (!(ext.dx >= kMinElementSize)) {
-      in.fail(line, fmt::format("DX = {} must be at least 1e-8", ext.dx));
-    }
-    if (!(ext.dy >= kMinElementSize)) {
-      in.fail(line, fmt::format("DY = {} must be at least 1e-8", ext.dy));
+    // The element size at its line (the model's limits; a larger one overflows the kernels).
+    for (const auto& [name, size] : {std::pair{"DX", ext.dx}, std::pair{"DY", ext.dy}}) {
+      if (!(size >= kMinElementSize && size <= model::kMaxElementSize_mm)) {
+        in.fail(line, fmt::format("{} = {} outside [1e-8, {:g}] mm", name, size,
+                                  model::kMaxElementSize_mm));
+      }
     }
   } else {
     // Hertzian options: curvatures / semi-axes / ratio and SCALE must be positive.

@@ -69,8 +69,10 @@ def inp_cases():
         for j, size in enumerate(["1e9", "1e30"]):
             out = []
             done = False
-            for l in lines:
+            grid_line = 0
+            for i, l in enumerate(lines):
                 if not done and "MX MY" in l and "DX DY" in l:
+                    grid_line = i + 2  # 1-based, after the header line
                     code, sep, comment = l.partition("%")
                     words = code.split()
                     words[-1] = size  # DY
@@ -79,9 +81,9 @@ def inp_cases():
                     done = True
                 out.append(l)
             if done:
-                # Reported at the case's first control word (line 3 of the example, 4 here).
-                write(f"gen_{stem}_element_size{j}.inp", "%", 4, "element size must lie",
-                      "".join(out))
+                # Reported at the grid line, as the reader reads it.
+                write(f"gen_{stem}_element_size{j}.inp", "%", grid_line,
+                      "outside [1e-8, 1e+08] mm", "".join(out))
                 n += 1
     return n
 
