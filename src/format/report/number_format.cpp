@@ -165,6 +165,7 @@ double filter_small(double v, double threshold) {
 }
 
 void append_fmt_sig(std::string& out, int width, int digits, int sci_digits, double v) {
+  if (v == 0.0) v = 0.0;  // a zero mirrored for the left wheel (−0) prints as 0, as CONTACT's
   const double a = std::fabs(v);
   const int lg = a < 1e-20 ? 0 : static_cast<int>(std::floor(std::log10(a) + 1e-7));
   Text t;

@@ -122,7 +122,7 @@ void write_profile_reading(std::ostream& os, const WheelRailRecord& r) {
     }
     line(os, fmt::format(" Reading file \"{}\" with profile slices", ps.file));
     if (!ps.slices->u.empty())
-      line(os, fmt::format(" obtained {} slices, {} = [{}, {}]", ps.slices->u.size(),
+      line(os, fmt::format(" obtained {} slices, {} = [{},{}]", ps.slices->u.size(),
                            std::string_view(body).starts_with("rail") ? "s" : "th",
                            g12(ps.slices->u.front()), g12(ps.slices->u.back())));
   };

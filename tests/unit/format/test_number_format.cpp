@@ -13,6 +13,12 @@ TEST(NumberFormat, SignificantDigitsFixed) {
   EXPECT_EQ(fmt_sig(12, 4, 4, 0.0), "       0.000");
 }
 
+TEST(NumberFormat, NegativeZeroPrintsAsZero) {
+  // A zero mirrored for the left wheel is −0.0; CONTACT's report has 0.000 there.
+  EXPECT_EQ(fmt_sig(12, 4, 4, -0.0), fmt_sig(12, 4, 4, 0.0));
+  EXPECT_EQ(fmt_sig(12, 4, 4, -0.0).find('-'), std::string::npos);
+}
+
 TEST(NumberFormat, SignificantDigitsDecidedBeforeRounding) {
   // lg is taken from the unrounded value: 9999.7 keeps the fixed form and rounds to "10000.",
   // 0.99999 prints with four decimals.
