@@ -57,8 +57,24 @@ class InputError : public Error {
     s.append(file.empty() ? std::string("<input>") : file);
     if (line > 0) s.append(":").append(std::to_string(line));
     s.append(": ").append(message);
-    if (!offending.empty()) s.append(" (found '").append(offending).append("')");
+    if (!offending.empty()) s.append(" (found '").append(printable(offending)).append("')");
     return s;
+  }
+  /// The offending text with control bytes (NUL, escape sequences of a binary file) written as
+  /// \xNN, so that a message never carries them to a terminal or a log.
+  static std::string printable(const std::string& text) {
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string out;
+    for (const char c : text) {
+      const auto u = static_cast<unsigned char>(c);
+      if (u < 0x20 || u == 0x7F) {
+        out.append("\\x").push_back(kHex[u >> 4]);
+        out.push_back(kHex[u & 0xF]);
+      } else {
+        out.push_back(c);
+      }
+    }
+    return out;
   }
   std::string file_;
   int line_;

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -197,6 +198,47 @@ TEST(CntcMaterial, LayerAndDampingParametersReadBackInTheProblemsUnits) {
   EXPECT_EQ(v[21], 6e5);
   cntc_getflags(&ire, &icp, &n, &code, &mdigit);
   EXPECT_EQ(mdigit, 4);  // the damping digit leaves M
+  cntc_finalize(&ire);
+}
+
+TEST(CntcFields, FrictionAndRigidSlipFieldsAndUncomputedOnesUntouched) {
+  // Steady rolling with ξ = 1e-3, η = −5e-4, no spin, μ = 0.25 (Coulomb): the local friction
+  // coefficient is μ in every element, the rigid slip W/δq is (ξ, η); the layer's fields of an
+  // elastic problem were not computed and leave the array as it was.
+  int ire = 79, icp = 1, imodul = 3, ifcver = 0, ierror = 0, one = 1;
+  cntc_initialize(&ire, &imodul, &ifcver, &ierror, " ", &one);
+  int flags[] = {CNTC_ic_tang, CNTC_ic_norm};
+  int values[] = {3, 1};
+  int nflags = 2;
+  cntc_setflags(&ire, &icp, &nflags, flags, values);
+  int law = 0, nfric = 2;
+  double friction[] = {0.25, 0.25};
+  cntc_setfrictionmethod(&ire, &icp, &law, &nfric, friction);
+  int ipotcn = -1, nhertz = 5;
+  double hertz[] = {12, 12, 0.002, 0.004, 1.1};
+  cntc_sethertzcontact(&ire, &icp, &ipotcn, &nhertz, hertz);
+  double veloc = 2000.0, fn = 10000.0, cksi = 1e-3, ceta = -5e-4, cphi = 0.0;
+  cntc_setreferencevelocity(&ire, &icp, &veloc);
+  cntc_setnormalforce(&ire, &icp, &fn);
+  cntc_setcreepages(&ire, &icp, &cksi, &ceta, &cphi);
+  cntc_calculate(&ire, &icp, &ierror);
+  ASSERT_GE(ierror, 0);
+  int lenarr = 144;
+  std::vector<double> field(144, -9.0);
+  int code = CNTC_fld_mu;
+  cntc_getfielddata(&ire, &icp, &code, &lenarr, field.data());
+  for (double v : field) ASSERT_EQ(v, 0.25);
+  code = CNTC_fld_wx;
+  cntc_getfielddata(&ire, &icp, &code, &lenarr, field.data());
+  for (double v : field) ASSERT_NEAR(v, cksi, 1e-15);
+  code = CNTC_fld_wy;
+  cntc_getfielddata(&ire, &icp, &code, &lenarr, field.data());
+  for (double v : field) ASSERT_NEAR(v, ceta, 1e-15);
+  std::fill(field.begin(), field.end(), -9.0);
+  for (int uncomputed : {CNTC_fld_taucrt, CNTC_fld_uplsx, CNTC_fld_uplsy}) {
+    cntc_getfielddata(&ire, &icp, &uncomputed, &lenarr, field.data());
+    EXPECT_EQ(field[0], -9.0) << uncomputed;
+  }
   cntc_finalize(&ire);
 }
 

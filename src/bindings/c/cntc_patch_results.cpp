@@ -27,6 +27,10 @@ struct PatchView {
   double veloc = 0.0;                     ///< [mm/s]
   double chi = 0.0, dq = 1.0;             ///< rolling direction [rad], step [mm] in effect
   Target target;                          ///< the problem, for its settings
+  /// The patch's Coulomb coefficient, and per grid row where it varies across the patch (V=1
+  /// in module 1, V=3 in module 3): the local friction coefficient where the solution has none.
+  double mu = 0.0;
+  std::vector<double> mu_rows;
 };
 
 std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* routine,
@@ -50,6 +54,10 @@ std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* ro
     v.veloc = t.m3->record.kinematics.veloc;
     v.chi = s.kinematics.chi;
     v.dq = s.kinematics.dq;
+    const format::Friction& f = t.m3->record.friction;
+    v.mu = std::min(f.fstat, f.fkin);
+    for (const format::FrictionValues& row : f.rows)
+      v.mu_rows.push_back(std::min(row.fstat, row.fkin));
     return v;
   }
   const auto& result = t.m1->result;
@@ -68,7 +76,23 @@ std::optional<PatchView> patch_of(const int* ire, const int* icp, const char* ro
   v.veloc = w.veloc_mm_s;
   v.chi = w.chi_rad;
   v.dq = w.dq_mm;
+  v.mu = w.friction.static_coefficient;
+  v.mu_rows = w.friction.row_coefficients;  // V=1: per row of the patch
   return v;
+}
+
+/// The local friction coefficient per element: the solver's where it varies with the slip or
+/// the temperature, else the patch's (per row where it varies across the patch).
+std::vector<double> local_friction(const PatchView& v) {
+  const Solution& s = *v.s;
+  if (!s.mu.empty()) return s.mu;
+  const Grid& g = s.grid;
+  std::vector<double> mu(g.size(), v.mu);
+  if (static_cast<int>(v.mu_rows.size()) == g.my)
+    for (int iy = 0; iy < g.my; ++iy)
+      for (int ix = 0; ix < g.mx; ++ix)
+        mu[g.index(ix, iy)] = v.mu_rows[static_cast<std::size_t>(iy)];
+  return mu;
 }
 
 /// Copies min(lenarr, mx·my) values of `field` × factor, element j = ix + mx·iy; for a left
@@ -233,6 +257,23 @@ CNTC_EXPORT void cntc_getfielddata(int* ire, int* icp, int* ifld, int* lenarr, d
       return copy_field(*v, s.sx, lenarr, fld, body);
     case CNTC_fld_sy:
       return copy_field(*v, s.sy, lenarr, fld, body * y);
+    case CNTC_fld_mu:
+      return copy_field(*v, local_friction(*v), lenarr, fld, 1.0);
+    case CNTC_fld_taucrt:  // M = 4 with plasticity only
+      if (!s.yield_limit.empty()) return copy_field(*v, s.yield_limit, lenarr, fld, pressure);
+      break;
+    case CNTC_fld_uplsx:
+      if (!s.plastic_x.empty()) return copy_field(*v, s.plastic_x, lenarr, fld, length);
+      break;
+    case CNTC_fld_uplsy:
+      if (!s.plastic_y.empty()) return copy_field(*v, s.plastic_y, lenarr, fld, y * length);
+      break;
+    case CNTC_fld_wx:  // the rigid slip posed, as sx (T = 1, 2, 3 only)
+      if (!s.wx.empty()) return copy_field(*v, s.wx, lenarr, fld, body);
+      break;
+    case CNTC_fld_wy:
+      if (!s.wy.empty()) return copy_field(*v, s.wy, lenarr, fld, body * y);
+      break;
     case CNTC_fld_temp1:  // [°C]; computed with H >= 1 only
       if (!s.temp1.empty()) return copy_field(*v, s.temp1, lenarr, fld, 1.0);
       break;

@@ -26,6 +26,20 @@ constexpr double kPi = std::numbers::pi;
 
 // ---- comments ----
 
+TEST(InpLexer, ControlBytesOfABadValueAreShownEscaped) {
+  // A binary file's bytes (NUL, escape) never reach the terminal raw: \xNN in the message.
+  InpStream in(std::string(" 1 x\0\x1b[2J\n", 11), "bin.inp");
+  try {
+    (void)in.read_reals(2, "list");
+    FAIL() << "a binary word was read as a number";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("'x\\x00\\x1B[2J'"), std::string::npos) << m;
+    EXPECT_EQ(m.find('\0'), std::string::npos);
+    EXPECT_EQ(m.find('\x1b'), std::string::npos);
+  }
+}
+
 TEST(InpLexer, PercentStartsACommentToEndOfLine) {
   EXPECT_EQ(significant_text("  12  34 % FN, CKSI"), "  12  34 ");
   EXPECT_EQ(words("% whole line"), Strings{});
