@@ -64,11 +64,18 @@ TEST(CntcAccess, WholeOrPatchRoutinesTakeOnlyProblemNumbersInModule3) {
   EXPECT_EQ(ierror, -101);
   int imeth = 0, nparam = 0;
   cntc_settemperaturedata(&ire, &minus1, &imeth, &nparam, nullptr);
-  int iblk = 1, isubs = 1, nx = 1, ny = 1, nz = 1;
+  int iblk = 1, isubs = 5, nx = 1, ny = 1, nz = 1;  // every element, at z = 1 mm
   double x = 0.0, y = 0.0, z = 1.0;
   subs_addblock(&ire, &minus1, &iblk, &isubs, &nx, &ny, &nz, &x, &y, &z);
+  subs_addblock(&ire, &one, &iblk, &isubs, &nx, &ny, &nz, &x, &y, &z);
   subs_calculate(&ire, &one, &ierror);  // the problem itself is unharmed
   EXPECT_EQ(ierror, 0);
+  int bx = -9, by = -9, bz = -9;  // a refused call leaves its outputs alone
+  subs_getblocksize(&too_large, &one, &iblk, &bx, &by, &bz);
+  EXPECT_EQ(bx, -9);
+  subs_getblocksize(&ire, &one, &iblk, &bx, &by, &bz);  // block 1: the 15 x 15 grid, 1 depth
+  EXPECT_EQ(bx, 15);
+  EXPECT_EQ(bz, 1);
   cntc_finalize(&ire);
 }
 

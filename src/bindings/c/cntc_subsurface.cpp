@@ -148,9 +148,9 @@ CNTC_EXPORT void subs_calculate(int* ire, int* icp, int* ierror) {
 
 CNTC_EXPORT void subs_getblocksize(int* ire, int* icp, int* iblk, int* nx, int* ny, int* nz) {
   if (nx == nullptr || ny == nullptr || nz == nullptr || iblk == nullptr) return;
-  *nx = *ny = *nz = -1;
   const Target t = open_target(ire, icp, Access::Results, "subs_getblocksize");
-  if (!t) return;
+  if (!t) return;        // a refused access leaves the outputs alone (§1.3)
+  *nx = *ny = *nz = -1;  // no such block
   const auto* results = results_of(t);
   if (results == nullptr || *iblk < 1 || *iblk > static_cast<int>(results->size())) return;
   const SubsurfaceResult& r = (*results)[static_cast<std::size_t>(*iblk - 1)];
