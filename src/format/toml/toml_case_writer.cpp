@@ -497,12 +497,15 @@ class WheelRailWriter {
                           r_.source.first_line, r_.case_number);
     if (r_.result_element != 0) line("result_element", fmt::format("{}", r_.result_element));
     if (d.r == 2 || d.r == 3) line("solve", "false");
-    if (d.gapwgt != 0) line("gap_weighting", named(schema::gap_weighting, d.gapwgt, "GAPWGT", id_));
+    // A sequence continues from the previous case as the .inp said (P, I).
+    if (d.p != 2) line("previous_state", named(schema::previous_state, d.p, "P", id_));
+    if (d.i != 0) line("initial_estimate", named(schema::initial_estimate, d.i, "I", id_));
     table("case.tangential");
     line("problem", named(schema::tangential_problem, d.t, "T", id_));
     if (d.b != 0) {
       table("case.normal");
       line("method", named(schema::normal_method, d.b, "B", id_));
+      if (d.b == 1) line("layer_flexibility_mm3_per_N", real(r_.materials.flxz));
     }
     const bool varying_friction = r_.variable_friction.v != 0;
     if (varying_friction) friction_along_rail();

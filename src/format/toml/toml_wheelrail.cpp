@@ -99,7 +99,7 @@ ProfileSpec read_profile(Table& w, std::string_view key, bool is_wheel, double g
   return ps;
 }
 
-void read_discretisation(Table& w, WheelRailRecord& r) {
+void read_discretisation(Table& w, WheelRailRecord& r, bool case_level_gap_weighting) {
   Table t = w.table("discretisation");
   WheelRailDiscretisation& d = r.discretisation;
   const std::vector<double> size = t.reals("element_size_mm", 2);
@@ -116,7 +116,13 @@ void read_discretisation(Table& w, WheelRailRecord& r) {
   if (d.d_comb > d.d_sep) t.fail_key("combination_mm", "must not exceed separation_mm");
   d.d_turn = t.real_or("turning_mm", 2.0 * d.d_sep - d.d_comb);
   d.g_miss = t.real_or("near_miss_mm", -1.0);
-  r.digits.gapwgt = t.choice_or("gap_weights", gap_weight_choices, 0);
+  // GAPWGT: here or as the case's gap_weighting (docs/case-files.md names both); not both.
+  if (t.has("gap_weights")) {
+    const int here = t.choice_or("gap_weights", gap_weight_choices, 0);
+    if (case_level_gap_weighting && here != r.digits.gapwgt)
+      t.fail_key("gap_weights", "contradicts the case's gap_weighting; give one of the two");
+    r.digits.gapwgt = here;
+  }
   r.npot_max = t.integer_in("max_elements", r.npot_max, 100, 1000000);
   t.finish();
 }
@@ -271,6 +277,10 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   VariableFriction variation;
   read_solver(c, shared);
   read_friction(c, shared, &variation);
+  if (!shared.friction.rows.empty())  // V=3: the grid rows of a module-3 problem
+    c.fail(
+        "friction.rows (one set per grid row, V=3) is a module-3 option; along a wheel/rail "
+        "contact give friction.along with points (V=1, 2)");
   read_material(c, ctx, shared);
   read_damping(c, shared);
   read_heat(c, shared);
@@ -283,11 +293,29 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   r.case_number = case_number;
   r.result_element = c.integer_in("result_element", 0, 0, 999);
   c.forbid("contact_problem", "module 1 finds its contact patches itself");
+  (void)c.opt_text("name");  // a label for humans
   ControlDigits& d = r.digits;
   d = shared.digits;
   d.r = c.boolean_or("solve", true) ? 1 : 3;
-  d.p = 2;
-  d.i = 0;
+  // A sequence of wheel/rail cases continues from the previous one as module 3 does (P, I);
+  // the first case of a result element starts a new one (spec/inp-format.md §3.2).
+  d.p = c.choice_or("previous_state", schema::previous_state, 2);
+  d.i = c.choice_or("initial_estimate", schema::initial_estimate, 0);
+  if (case_number == 1 && d.p != 2) {
+    r.source.warnings.push_back(
+        fmt::format("previous_state \"{}\" overridden to \"new\" in the first case of result "
+                    "element {}",
+                    schema::name_of(schema::previous_state, d.p), r.result_element));
+    d.p = 2;
+  }
+  if (case_number == 1 && d.i != 0) {
+    r.source.warnings.push_back(
+        fmt::format("initial_estimate \"{}\" overridden to \"none\" in the first case of "
+                    "result element {}",
+                    schema::name_of(schema::initial_estimate, d.i), r.result_element));
+    d.i = 0;
+  }
+  const bool case_level_gap_weighting = c.has("gap_weighting");
   d.gapwgt = c.choice_or("gap_weighting", schema::gap_weighting, 0);
   d.g = shared.solver.method;
   if (shared.solver.method == 5) r.source.warnings.push_back(kGdSteadyNote);
@@ -296,6 +324,18 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   d.e = 3;
   if (auto t = c.opt_table("normal")) {
     d.b = t->choice_or("method", schema::normal_method, 0);
+    if (d.b == 2 || d.b == 3 || d.b == 4)
+      t->fail_key("method",
+                  "elliptic, parabolic and SDEC pressures are module-3 methods (B=2, "
+                  "3, 4); wheel/rail patches take exact, exact_with_layer, kpec, analyn");
+    if (d.b == 1) {  // B=1: the compressible interface layer's flexibility FLXZ
+      shared.materials.flxz = t->real("layer_flexibility_mm3_per_N");
+      if (!(shared.materials.flxz > 0.0))
+        t->fail_key("layer_flexibility_mm3_per_N",
+                    fmt::format("{} must be positive", shared.materials.flxz));
+    } else {
+      t->forbid("layer_flexibility_mm3_per_N", "only with method = \"exact_with_layer\"");
+    }
     t->finish();  // the load is the wheelset's: wheel_rail.vertical_force_N or position.z_mm
   }
   r.solver = shared.solver;
@@ -308,7 +348,7 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
 
   Table w = c.table("wheel_rail");
   r.config = w.choice_or("side", side_choices, 1);
-  read_discretisation(w, r);
+  read_discretisation(w, r, case_level_gap_weighting);
   read_track(w, r);
   r.rail = read_profile(w, "rail", false, r.track.gaught, ctx, r.source.warnings);
   read_wheelset(w, r);

@@ -143,6 +143,115 @@ TEST(TomlWheelRail, ConvertedBenchmarkFileGivesTheSameResults) {
   }
 }
 
+TEST(TomlWheelRail, CaseKeysOfModule3AreReadOrRefusedNeverIgnored) {
+  // name is a label; gap_weighting at the case or in the discretisation (not contradicting);
+  // friction rows (V=3) and the module-3 pressure methods are refused with their keys.
+  REQUIRE_EXAMPLES();
+  const test_support::ScratchDir scratch("rollcontact_toml_wheelrail_case_keys");
+  const fs::path& dir = with_profiles(scratch);
+  std::ifstream in(toml_case);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string good = all.str();
+  const auto read = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    text.replace(text.find(from), from.size(), to);
+    std::ofstream(dir / "variant.toml") << text;
+    try {
+      return format::read_toml_input_file(dir / "variant.toml");
+    } catch (const InputError& e) {
+      ADD_FAILURE() << e.what();
+      return std::vector<format::InputCase>{};
+    }
+  };
+  const auto refused = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    text.replace(text.find(from), from.size(), to);
+    std::ofstream(dir / "variant.toml") << text;
+    try {
+      (void)format::read_toml_input_file(dir / "variant.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string head = "[[case]]\n";
+  const auto named = read(head, head + "name = \"y = 3 mm\"\n");
+  ASSERT_EQ(named.size(), 1U);
+  const auto linear = read(head, head + "gap_weighting = \"linear\"\n");
+  ASSERT_EQ(linear.size(), 1U);
+  EXPECT_EQ(std::get<format::WheelRailRecord>(linear[0]).digits.gapwgt, 1);
+  const std::string both = refused("combination_mm = 4.0",
+                                   "combination_mm = 4.0\ngap_weights = "
+                                   "\"squared\"");
+  EXPECT_EQ(both.find("contradicts"), std::string::npos) << "no case-level value: " << both;
+  std::string twice = good;
+  twice.replace(twice.find("combination_mm = 4.0"), 20,
+                "combination_mm = 4.0\ngap_weights = \"squared\"");
+  twice.replace(twice.find(head), head.size(), head + "gap_weighting = \"linear\"\n");
+  std::ofstream(dir / "twice.toml") << twice;
+  try {
+    (void)format::read_toml_input_file(dir / "twice.toml");
+    ADD_FAILURE() << "contradicting gap weightings were read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("discretisation.gap_weights: contradicts"),
+              std::string::npos)
+        << e.what();
+  }
+  const std::string rows =
+      refused("static = 0.3\nkinetic = 0.3\n", "rows = [{ static = 0.3, kinetic = 0.3 }]\n");
+  EXPECT_NE(rows.find("friction.rows"), std::string::npos) << rows;
+  const std::string elliptic =
+      refused("problem = \"steady_rolling\"\n",
+              "problem = \"steady_rolling\"\n[case.normal]\nmethod = \"elliptic\"\n");
+  EXPECT_NE(elliptic.find("module-3 methods"), std::string::npos) << elliptic;
+}
+
+/// The benchmark's first case with its control word 1 replaced and `extra` after line 18 (the
+/// material line), followed by `more` (further cases), as an .inp text.
+std::string benchmark_variant(const std::string& word1, const std::string& extra,
+                              const std::string& more) {
+  std::ifstream in(examples_dir / "mbench_a22_right.inp");
+  std::string text, line;
+  for (int n = 1; std::getline(in, line) && n <= 26; ++n) {
+    if (n == 13) line = " " + word1 + "    C-P-B-T-N-F-S";
+    text += line + "\n";
+    if (n == 18) text += extra;
+  }
+  return text + more + " 0 MODULE\n";
+}
+
+TEST(TomlWheelRail, SequencesAndTheLayerConvertAndSolveTheSame) {
+  // A transient-rolling sequence continued with P = 0, and B = 1 with its FLXZ: the TOML twin
+  // keeps previous_state and layer_flexibility_mm3_per_N (they were refused or lost, and the
+  // converted sequence started each case anew: case 2 FX -12.4 N instead of -24.2 N).
+  REQUIRE_EXAMPLES();
+  const test_support::ScratchDir scratch("rollcontact_toml_wheelrail_sequence");
+  const fs::path& dir = with_profiles(scratch);
+  const std::string next =
+      "  1 MODULE\n 1002100\n 0111002\n 0100321\n  0.0  0.0  10000.  0.0 0.0  0.0\n"
+      " 2000. 0.0    0.0   0.0        0.0  -4.34811810\n";
+  std::ofstream(dir / "sequence.inp") << benchmark_variant("1202100", "", next + next);
+  std::ofstream(dir / "layer.inp") << benchmark_variant("1213100", "  2e-5    FLXZ\n", "");
+  for (const char* stem : {"sequence", "layer"}) {
+    const auto from_inp = format::read_input_cases(dir / (std::string(stem) + ".inp"));
+    const std::string text = format::write_toml_input_string(from_inp, dir);
+    const auto from_toml = format::read_toml_input_string(text, "converted.toml", dir);
+    ASSERT_EQ(from_toml.size(), from_inp.size()) << stem;
+    WheelsetSolver a, b;
+    for (std::size_t k = 0; k < from_inp.size(); ++k) {
+      const auto& wi = std::get<format::WheelRailRecord>(from_inp[k]);
+      const auto& wt = std::get<format::WheelRailRecord>(from_toml[k]);
+      EXPECT_EQ(wt.digits.p, wi.digits.p) << stem << " case " << k + 1;
+      EXPECT_EQ(wt.materials.flxz, wi.materials.flxz) << stem;
+      const WheelRailSolution si = a.solve(format::to_wheelrail_problem(wi));
+      const WheelRailSolution st = b.solve(format::to_wheelrail_problem(wt));
+      EXPECT_EQ(st.force_tr.x, si.force_tr.x) << stem << " case " << k + 1;
+      EXPECT_EQ(st.force_tr.y, si.force_tr.y) << stem << " case " << k + 1;
+    }
+  }
+}
+
 TEST(TomlWheelRail, FrictionAlongTheRailRoundTrip) {
   // mbench_a22_varfric: friction with the rail's inclination (V=1; cases 1-4, planar and
   // conformal) and along the track (V=2; cases 6, 7) as [case.friction] `along` and `points`:
