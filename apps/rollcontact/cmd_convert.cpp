@@ -44,6 +44,22 @@ std::vector<format::CaseRecord> identities_of(const std::vector<format::InputCas
   return identities;
 }
 
+/// The output must not be a file the cases read (a profile, an influence file): it would be
+/// replaced by the converted cases.
+void refuse_replacing_read_files(const ConvertSettings& s, const std::filesystem::path& out,
+                                 const std::vector<format::InputCase>& cases) {
+  std::error_code ec;
+  if (!std::filesystem::exists(out, ec)) return;
+  for (const std::filesystem::path& file : batch::files_read_by(cases)) {
+    if (std::filesystem::equivalent(file, out, ec)) {
+      throw InputError(s.output, 0,
+                       fmt::format("is the file {} that the cases read; the output never "
+                                   "replaces an input",
+                                   file.string()));
+    }
+  }
+}
+
 int convert(const ConvertSettings& s) {
   const std::filesystem::path in(s.input);
   const std::filesystem::path out(s.output);
@@ -63,6 +79,7 @@ int convert(const ConvertSettings& s) {
     // TOML -> .inp: module-3 and wheel/rail cases (profiles given as points become tables
     // beside the .inp file).
     const std::vector<format::InputCase> cases = format::read_toml_input_file(in);
+    refuse_replacing_read_files(s, out, cases);
     const auto tables = format::write_inp_input_file(out, cases);
     if (!s.quiet)
       for (const std::filesystem::path& t : tables)
@@ -70,6 +87,7 @@ int convert(const ConvertSettings& s) {
     return report(s, in, out, cases.size(), identities_of(cases));
   }
   const std::vector<format::InputCase> cases = batch::read_input_file(in);
+  refuse_replacing_read_files(s, out, cases);
   format::write_toml_input_file(out, cases);
   return report(s, in, out, cases.size(), identities_of(cases));
 }

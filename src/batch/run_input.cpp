@@ -484,9 +484,40 @@ bool is_output_name(const std::filesystem::path& file, const std::filesystem::pa
   return tail == ".mat" || tail == ".subs";
 }
 
-/// The files a case reads besides the input file itself: profiles (and each slice of a slices
-/// file), influence coefficients (C=9).
-std::vector<std::filesystem::path> files_read(const std::vector<format::InputCase>& cases) {
+/// An output never replaces an input: the input file (x.out or x.json would be overwritten by the
+/// report of its own run) or a file its cases read (a profile named like an output).
+void refuse_overwriting_inputs(const std::filesystem::path& input,
+                               const std::filesystem::path& stem,
+                               const std::vector<format::InputCase>& cases) {
+  std::vector<std::filesystem::path> inputs = files_read_by(cases);
+  inputs.insert(inputs.begin(), input);
+  for (const std::filesystem::path& file : inputs) {
+    // A file named like an output, or the same file under another name (a link to x.json).
+    bool same = false;
+    for (const char* ext : {".out", ".json"}) {
+      std::filesystem::path out = stem;
+      out += ext;
+      std::error_code ec;
+      same =
+          same || (std::filesystem::exists(out, ec) && std::filesystem::equivalent(file, out, ec));
+    }
+    if (!same && !is_output_name(file, stem)) continue;
+    if (file == input)
+      throw InputError(input.string(), 0,
+                       fmt::format("the output {} would replace this input; rename the input "
+                                   "(e.g. to .inp) or write elsewhere with -o DIR",
+                                   file.string()));
+    throw InputError(input.string(), 0,
+                     fmt::format("the outputs of this run ({}.out, .json, .mat, .subs) would "
+                                 "replace the input {} that it reads; rename that file or write "
+                                 "elsewhere with -o DIR",
+                                 stem.string(), file.string()));
+  }
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> files_read_by(const std::vector<format::InputCase>& cases) {
   std::vector<std::filesystem::path> files;
   for (const format::InputCase& c : cases) {
     if (const auto* m3 = std::get_if<format::CaseRecord>(&c)) {
@@ -503,30 +534,6 @@ std::vector<std::filesystem::path> files_read(const std::vector<format::InputCas
   }
   return files;
 }
-
-/// An output never replaces an input: the input file (x.out or x.json would be overwritten by the
-/// report of its own run) or a file its cases read (a profile named like an output).
-void refuse_overwriting_inputs(const std::filesystem::path& input,
-                               const std::filesystem::path& stem,
-                               const std::vector<format::InputCase>& cases) {
-  std::vector<std::filesystem::path> inputs = files_read(cases);
-  inputs.insert(inputs.begin(), input);
-  for (const std::filesystem::path& file : inputs) {
-    if (!is_output_name(file, stem)) continue;
-    if (file == input)
-      throw InputError(input.string(), 0,
-                       fmt::format("the output {} would replace this input; rename the input "
-                                   "(e.g. to .inp) or write elsewhere with -o DIR",
-                                   file.string()));
-    throw InputError(input.string(), 0,
-                     fmt::format("the outputs of this run ({}.out, .json, .mat, .subs) would "
-                                 "replace the input {} that it reads; rename that file or write "
-                                 "elsewhere with -o DIR",
-                                 stem.string(), file.string()));
-  }
-}
-
-}  // namespace
 
 double estimated_run_cost(const std::filesystem::path& input) {
   double cost = 0.0;

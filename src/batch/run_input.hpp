@@ -16,6 +16,10 @@
 
 namespace rollcontact::batch {
 
+/// The files the cases read besides their input file: profiles (each slice of a slices file
+/// too) and influence-coefficient files (C=9), as resolved.
+std::vector<std::filesystem::path> files_read_by(const std::vector<format::InputCase>& cases);
+
 /// The cases of an input file: a TOML case file (docs/case-files.md) by its extension `.toml`,
 /// anything else CONTACT's `.inp` format. Throws InputError naming file and line.
 std::vector<format::InputCase> read_input_file(const std::filesystem::path& input);

@@ -13,6 +13,9 @@ namespace rollcontact::wheelrail {
 namespace {
 
 constexpr double kNoWheel = 1e30;
+/// The most lateral gap samples of a contact search (0.3·DS apart: 2,500 at DS = 0.2 mm on a
+/// 150 mm rail profile); reached only for DS below 2 µm.
+constexpr std::size_t kMaxGapSamples = 250000;
 
 /// A rail that varies along x (a roller, a sliced rail): the wheel-frame x of the locus point on
 /// the wheel's circle at profile point w (radius r), where the wheel's surface normal n (track
@@ -423,7 +426,10 @@ double rolling_curvature_per_mm(const model::WheelRailProblem& p) {
 GapSamples sample_rail(const model::WheelRailProblem& p, const PlacedProfiles& prof) {
   GapSamples s;
   GapFunction& g = s.base;
-  g.dy_mm = 0.3 * p.search.ds_mm;
+  // Samples 0.3·DS apart, but at most kMaxGapSamples over the rail profile: a DS of micrometres
+  // (the patch grid is coarsened by NPOT_MAX's doubling anyway) asked for gigabytes here.
+  const double width = prof.rail().y_max() - prof.rail().y_min();
+  g.dy_mm = std::max(0.3 * p.search.ds_mm, width / static_cast<double>(kMaxGapSamples));
   g.y0_mm = prof.rail_y_mm() + prof.rail().y_min();
   const auto n =
       static_cast<std::size_t>((prof.rail().y_max() - prof.rail().y_min()) / g.dy_mm) + 1;

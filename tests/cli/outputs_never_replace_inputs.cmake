@@ -56,6 +56,29 @@ if(NOT after STREQUAL table)
   message(FATAL_ERROR "the profile wr.out was replaced")
 endif()
 
+# convert onto a profile the cases read (a plain table named railprof.toml).
+file(WRITE "${WORK}/railprof.toml" "${table}")
+string(REPLACE "'wr.out'" "'railprof.toml'" inp "${inp}")
+file(WRITE "${WORK}/wr2.inp" "${inp}")
+expect_refused("convert onto a profile" "is the file .*railprof.toml that the cases read" ${CLI}
+               convert -q wr2.inp railprof.toml)
+file(READ "${WORK}/railprof.toml" after)
+if(NOT after STREQUAL table)
+  message(FATAL_ERROR "convert replaced the profile railprof.toml")
+endif()
+
+# A profile that is a link to the JSON the run would write (rail.txt -> wr3.json).
+file(WRITE "${WORK}/wr3.json" "${table}")
+file(CREATE_LINK "${WORK}/wr3.json" "${WORK}/rail.txt" SYMBOLIC)
+string(REPLACE "'railprof.toml'" "'rail.txt'" inp "${inp}")
+file(WRITE "${WORK}/wr3.inp" "${inp}")
+expect_refused("a profile linked to an output" "would replace the input rail.txt" ${CLI} run -q
+               wr3.inp)
+file(READ "${WORK}/wr3.json" after)
+if(NOT after STREQUAL table)
+  message(FATAL_ERROR "the run replaced the profile behind rail.txt")
+endif()
+
 file(CREATE_LINK "${WORK}/x.inp" "${WORK}/link.toml" SYMBOLIC)
 file(READ "${WORK}/x.inp" before)
 expect_refused("convert onto a link to the input" "is the input x.inp itself" ${CLI} convert -q

@@ -251,11 +251,11 @@ std::vector<std::filesystem::path> write_inp_input_file(const std::filesystem::p
       if (const auto* r = std::get_if<WheelRailRecord>(&c))
         for (const ProfileSpec* ps : {&r->rail, &r->wheel})
           clash = clash || (!ps->path.empty() && same_file(target, ps->path));
-    if (clash)
-      throw Error(
-          fmt::format("the profile table {} would replace a file the cases read: choose "
-                      "another output name",
-                      target.string()));
+    if (clash)  // an input problem: exit status 2, nothing written
+      throw InputError(path.string(), 0,
+                       fmt::format("the profile table {} would replace a file the cases read: "
+                                   "choose another output name",
+                                   target.string()));
   }
   std::vector<std::filesystem::path> written;
   for (const CompanionFile& f : inp.companions) {

@@ -178,7 +178,7 @@ TEST(InpWriterModule1, ACompanionNeverReplacesAProfileTheCasesRead) {
   }
   const std::vector<InputCase> cases = read_toml_input_string(
       points_case(scratch / "out_rail1.txt", "mirror_z = \"no\"\n"), "points.toml", scratch.path());
-  EXPECT_THROW(write_inp_input_file(scratch / "out.inp", cases), Error);
+  EXPECT_THROW(write_inp_input_file(scratch / "out.inp", cases), InputError);
   EXPECT_FALSE(fs::exists(scratch / "out.inp"));
 }
 

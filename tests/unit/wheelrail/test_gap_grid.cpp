@@ -25,6 +25,19 @@ model::WheelRailProblem yawed_cone() {
   return p;
 }
 
+TEST(GapGrid, MicrometreElementsKeepTheSearchBounded) {
+  // DS = 1e-5 mm asked for 0.3·DS samples: 20 million over the 60 mm crown and gigabytes with
+  // the wheel's (std::bad_alloc, exit 3). The search is capped at 250,000 samples (at 0.2 mm it
+  // takes its 0.06 mm spacing, 1,001 samples); the patch grid itself is coarsened by NPOT_MAX.
+  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0);
+  const PlacedProfiles prof(p);
+  EXPECT_EQ(sample_rail(p, prof).base.gap.size(), 1001U);
+  p.search.dx_mm = p.search.ds_mm = 1e-5;
+  const GapSamples tiny = sample_rail(p, prof);
+  EXPECT_LE(tiny.base.gap.size(), 250001U);
+  EXPECT_GE(tiny.base.gap.size(), 249999U);
+}
+
 TEST(GapGrid, EachSampleIsTheMinimumAlongX) {
   model::WheelRailProblem p = yawed_cone();
   p.search.method = model::ContactSearch::GapGrid;
