@@ -197,7 +197,7 @@ Module1Words read_control_words_module1(InpStream& in) {
   check_digit(in, l1, "B", d.b, {0, 1, 5, 6});
   check_digit(in, l1, "T", d.t, range(0, 3));
   check_digit(in, l1, "N", d.n, range(0, 1));
-  check_digit(in, l1, "F", d.f, {0, 1, 3});
+  check_digit(in, l1, "F", d.f, range(0, 3));  // 2: MY_WS (docs/decisions.md)
   check_digit(in, l1, "S", d.s, range(0, 3));
 
   // Word 2: V L D C M Z E, optional 10*GAPWGT + M2.

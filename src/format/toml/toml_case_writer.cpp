@@ -257,8 +257,10 @@ class CaseWriter {
       table("material.conformal");
       line("method", fmt::format("{}", m.conformal.if_meth));
       line("variant", fmt::format("{}", m.conformal.variant));
-      line("y_mm", real_array(m.conformal.y));
-      line("inclination_rad", real_array(m.conformal.alpha));
+      if (!m.conformal.y.empty()) {  // module 1 computes its own
+        line("y_mm", real_array(m.conformal.y));
+        line("inclination_rad", real_array(m.conformal.alpha));
+      }
     }
   }
 

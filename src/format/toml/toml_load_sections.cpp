@@ -282,7 +282,7 @@ void read_body(Table& m, std::string_view key, double& poisson, double& modulus)
 
 }  // namespace
 
-void read_material(Table& c, const Context& ctx, CaseRecord& p) {
+void read_material(Table& c, const Context& ctx, CaseRecord& p, bool wheel_rail) {
   Table t = c.table("material");
   Materials& m = p.materials;
   ControlDigits& d = p.digits;
@@ -312,13 +312,18 @@ void read_material(Table& c, const Context& ctx, CaseRecord& p) {
     auto& conf = m.conformal;
     conf.if_meth = cf.integer_in("method", 0, 0, 1);
     conf.variant = cf.integer_in("variant", 1, 1, 4);
-    conf.y = cf.reals("y_mm");
-    conf.alpha = cf.reals("inclination_rad");
-    if (conf.y.empty() || conf.y.size() > 9999)
-      cf.fail_key("y_mm", fmt::format("needs 1..9999 values, not {}", conf.y.size()));
-    if (conf.alpha.size() != conf.y.size()) {
-      cf.fail_key("inclination_rad", fmt::format("needs as many values as y_mm ({}), not {}",
-                                                 conf.y.size(), conf.alpha.size()));
+    if (wheel_rail) {  // module 1: IF_METH VARIANT only (the .inp line has no pairs)
+      cf.forbid("y_mm", "module 1 computes the inclinations of its patches");
+      cf.forbid("inclination_rad", "module 1 computes the inclinations of its patches");
+    } else {
+      conf.y = cf.reals("y_mm");
+      conf.alpha = cf.reals("inclination_rad");
+      if (conf.y.empty() || conf.y.size() > 9999)
+        cf.fail_key("y_mm", fmt::format("needs 1..9999 values, not {}", conf.y.size()));
+      if (conf.alpha.size() != conf.y.size()) {
+        cf.fail_key("inclination_rad", fmt::format("needs as many values as y_mm ({}), not {}",
+                                                   conf.y.size(), conf.alpha.size()));
+      }
     }
     cf.finish();
   } else {

@@ -19,8 +19,9 @@ void read_tangential(Table& c, CaseRecord& p);
 /// surface's inclination ALPHA [rad]; "track" V=2: SVF [mm]) as `points = [{at = …, <law
 /// values>}, …]`; without it such a table is an error (module 3 has no rail).
 void read_friction(Table& c, CaseRecord& p, VariableFriction* variation = nullptr);
-/// [material]: the bodies, their compliance model, the influence-coefficient file.
-void read_material(Table& c, const Context& ctx, CaseRecord& p);
+/// [material]: the bodies, their compliance model, the influence-coefficient file. A wheel/rail
+/// case (`wheel_rail`) has no conformal inclination table of its own: module 1 computes it.
+void read_material(Table& c, const Context& ctx, CaseRecord& p, bool wheel_rail = false);
 /// [grid]: the potential contact area (explicit or Hertzian).
 void read_grid(Table& c, CaseRecord& p);
 /// [geometry]: the undeformed distance of a non-Hertzian grid.

@@ -281,7 +281,7 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
     c.fail(
         "friction.rows (one set per grid row, V=3) is a module-3 option; along a wheel/rail "
         "contact give friction.along with points (V=1, 2)");
-  read_material(c, ctx, shared);
+  read_material(c, ctx, shared, true);
   read_damping(c, shared);
   read_heat(c, shared);
   read_subsurface(c, shared);

@@ -80,7 +80,7 @@ constexpr MalformedCase kCases[] = {
     {"unterminated_quote.inp", 9, "unterminated quoted string", false},
     {"module_2.inp", 2, "module number 2 is not valid", false},
     // module_1.inp holds a module-3 case under a module-1 line: F=2 does not exist in module 1.
-    {"module_1.inp", 3, "digit F=2 is not a valid value (0, 1, 3)", false},
+    {"module_1.inp", 4, "Z=2 keeps the rail profile, but none was read", false},
     {"reid_1000.inp", 2, "REID = 1000 outside 0..999", false},
     {"cpid_0.inp", 2, "CPID = 0 outside 1..9", false},
     {"word1_too_many_digits.inp", 3, "control word 1 (PBTNFS) has more than 7 digits", false},

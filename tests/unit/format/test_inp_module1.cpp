@@ -146,6 +146,17 @@ std::string massless_case(const std::string& w1, const std::string& rail_line) {
   return text + " 0 MODULE\n";
 }
 
+TEST(InpModule1, PrescribedPitchMomentReplacesVpitch) {
+  // F=2 (docs/decisions.md "Prescribed pitch moment"): MY_WS [N mm] in place of VPITCH, with
+  // N=1. The digit check had refused it while the rest of the reader read it.
+  const auto cases = read(first_case("1203120") + " 0 MODULE\n");
+  EXPECT_EQ(wr(cases, 0).digits.f, 2);
+  EXPECT_DOUBLE_EQ(wr(cases, 0).motion.my, -4.3);
+  auto [line, message] = input_error(first_case("1203020") + " 0 MODULE\n");
+  EXPECT_EQ(line, 2);
+  EXPECT_NE(message.find("F=2 (prescribed MY_WS) requires N=1"), std::string::npos) << message;
+}
+
 TEST(InpModule1, MasslessRailNeedsTangentialAndVerticalEquations) {
   // Accepted: T=3, N=1 (δz from FZ), and N=0 with KZRAIL > 0.
   EXPECT_EQ(input_error(massless_case("1203130", "  1e4 0 0 0\n")).first, 0);
