@@ -140,6 +140,18 @@ void assign_friction_values(const FrictionValues& values, Friction& friction) {
   friction.params = values.params;
 }
 
+namespace {
+
+/// Modified Fastsim's slope reduction K0_MF, ALFAMF, BETAMF (from value `first` of `g`): the
+/// initial slope factor is positive, the others not negative.
+void check_slope_reduction(const InpStream& in, const GroupValues& g, std::size_t first) {
+  require_positive(in, g.line(first), "K0_MF", g.real(first));
+  require_at_least(in, g.line(first + 1), "ALFAMF", g.real(first + 1), 0.0);
+  require_at_least(in, g.line(first + 2), "BETAMF", g.real(first + 2), 0.0);
+}
+
+}  // namespace
+
 void read_material_block(InpStream& in, int b, int m, Materials& materials) {
   const GroupValues g =
       in.read_group({{"POISS1", kReal}, {"POISS2", kReal}, {"GG1", kReal}, {"GG2", kReal}},
@@ -155,6 +167,7 @@ void read_material_block(InpStream& in, int b, int m, Materials& materials) {
 
   if (b == 1) {
     const GroupValues fl = in.read_group({{"FLXZ", kReal}}, "the B=1 layer line (FLXZ)");
+    require_positive(in, fl.line(0), "FLXZ", fl.real(0));  // ≤ 0 gave a negative approach
     materials.flxz = fl.real(0);
   }
   materials.model_params = {};
@@ -167,10 +180,13 @@ void read_material_block(InpStream& in, int b, int m, Materials& materials) {
     const GroupValues ml =
         in.read_group({{"FLX", kReal}, {"K0_MF", kReal}, {"ALFAMF", kReal}, {"BETAMF", kReal}},
                       "the M=2 line (FLX K0_MF ALFAMF BETAMF)");
+    require_positive(in, ml.line(0), "FLX", ml.real(0));
+    check_slope_reduction(in, ml, 1);
     materials.model_params = {ml.real(0), ml.real(1), ml.real(2), ml.real(3)};
   } else if (m == 3 || m == 5) {
     const GroupValues ml = in.read_group({{"K0_MF", kReal}, {"ALFAMF", kReal}, {"BETAMF", kReal}},
                                          fmt::format("the M={} line (K0_MF ALFAMF BETAMF)", m));
+    check_slope_reduction(in, ml, 0);
     materials.model_params = {ml.real(0), ml.real(1), ml.real(2), 0.0};
   } else if (m == 4) {
     const GroupValues ml =

@@ -82,6 +82,9 @@ void read_normal(Table& c, CaseRecord& p) {
   }
   if (d.b == 1) {
     p.materials.flxz = t.real("layer_flexibility_mm3_per_N");
+    if (!(p.materials.flxz > 0.0))
+      t.fail_key("layer_flexibility_mm3_per_N",
+                 fmt::format("{} must be positive", p.materials.flxz));
   } else {
     t.forbid("layer_flexibility_mm3_per_N", "only with method = \"exact_with_layer\"");
   }
@@ -342,6 +345,8 @@ void read_material(Table& c, const Context& ctx, CaseRecord& p, bool wheel_rail)
   }
   if (d.m == 2) {
     m.model_params[0] = t.real("flexibility_mm3_per_N");
+    if (!(m.model_params[0] > 0.0))
+      t.fail_key("flexibility_mm3_per_N", fmt::format("{} must be positive", m.model_params[0]));
   } else {
     t.forbid("flexibility_mm3_per_N", "only with model = \"fastsim_one_flexibility\"");
   }
@@ -351,6 +356,12 @@ void read_material(Table& c, const Context& ctx, CaseRecord& p, bool wheel_rail)
     m.model_params[o] = s.real("k0");
     m.model_params[o + 1] = s.real("alpha");
     m.model_params[o + 2] = s.real("beta");
+    if (!(m.model_params[o] > 0.0))
+      s.fail_key("k0", fmt::format("{} must be positive", m.model_params[o]));
+    for (const char* key : {"alpha", "beta"}) {
+      const double v = m.model_params[o + (key[0] == 'a' ? 1 : 2)];
+      if (!(v >= 0.0)) s.fail_key(key, fmt::format("{} must not be negative", v));
+    }
     s.finish();
   } else {
     t.forbid("slope_reduction", "only with the fastsim and fastrip models");

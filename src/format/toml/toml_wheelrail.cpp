@@ -282,6 +282,10 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
         "friction.rows (one set per grid row, V=3) is a module-3 option; along a wheel/rail "
         "contact give friction.along with points (V=1, 2)");
   read_material(c, ctx, shared, true);
+  if (shared.materials.influence_type == 9)  // C=9: one coefficient matrix, not per patch
+    c.fail(
+        "material.influence = \"from_file\" is a module-3 option: each wheel/rail patch "
+        "has its own grid");
   read_damping(c, shared);
   read_heat(c, shared);
   read_subsurface(c, shared);

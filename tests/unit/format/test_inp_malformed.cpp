@@ -39,6 +39,8 @@ constexpr MalformedCase kCases[] = {
     {"grid_dx_tiny.inp", 11, "DX = 1e-09 outside [1e-8, 1e+08] mm", false},
     {"grid_dx_huge.inp", 14, "DX = 1000000000 outside [1e-8, 1e+08] mm", false},
     {"heat_heatcp_negative.inp", 11, "HEATCP1 = -450 must be positive", false},
+    {"flxz_negative.inp", 10, "FLXZ = -1 must be positive", false},
+    {"k0_zero.inp", 10, "K0_MF = 0 must be positive", false},
     {"memdst_negative.inp", 9, "MEMDST = -5 must be at least 0", false},
     {"letters_for_fn.inp", 7, "expected a real number for FN", false},
     {"maxgs_zero.inp", 6, "MAXGS = 0 outside 1..9999", false},

@@ -89,6 +89,22 @@ TEST(TomlCaseErrors, OutOfRangeValues) {
       << m;
 }
 
+TEST(TomlCaseErrors, LayerAndSimplifiedTheoryValuesAreCheckedAtTheirKeys) {
+  // A negative layer flexibility solved to an approach of -53 mm; K0 = 0 zeroes Fastsim's slope.
+  std::string m =
+      error_of(minimal_case("method = \"exact_with_layer\"\n"
+                            "layer_flexibility_mm3_per_N = -1.0\n"));
+  EXPECT_NE(m.find("case[1].normal.layer_flexibility_mm3_per_N: -1 must be positive"),
+            std::string::npos)
+      << m;
+  std::string fastsim = minimal_case();
+  fastsim.replace(fastsim.find("[case.material]\n"), 16,
+                  "[case.material]\nmodel = \"fastsim_three_flexibilities\"\n"
+                  "slope_reduction = { k0 = 0.0, alpha = 1.0, beta = 1.0 }\n");
+  m = error_of(fastsim);
+  EXPECT_NE(m.find("slope_reduction.k0: 0 must be positive"), std::string::npos) << m;
+}
+
 TEST(TomlCaseErrors, BadChoiceListsTheNames) {
   const std::string m = error_of(minimal_case("method = \"exactly\"\n"));
   EXPECT_NE(m.find("bad.toml:4: case[1].normal.method: \"exactly\" is not one of \"exact\""),
