@@ -239,7 +239,18 @@ class Table {
   [[noreturn]] void type_error(const toml::node& n, const std::string& path,
                                std::string_view expected) const {
     throw InputError(*file_, line_of(n),
-                     fmt::format("{}: expected {} but found {}", path, expected, type_name(n)));
+                     fmt::format("{}: expected {} but found {}", path, expected, described(n)));
+  }
+  /// A node as a message shows it: a scalar with its value, else its kind.
+  static std::string described(const toml::node& n) {
+    if (const auto* s = n.as_string()) {
+      const std::string& v = s->get();
+      return fmt::format("the string \"{}{}\"", v.substr(0, 40), v.size() > 40 ? "…" : "");
+    }
+    if (const auto* i = n.as_integer()) return fmt::format("the integer {}", i->get());
+    if (const auto* f = n.as_floating_point()) return fmt::format("the number {}", f->get());
+    if (const auto* b = n.as_boolean()) return fmt::format("the boolean {}", b->get());
+    return std::string(type_name(n));
   }
   const toml::array& array_of(const toml::node& n, const std::string& path,
                               std::string_view expected) const {
