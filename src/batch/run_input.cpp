@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstring>
 #include <map>
+#include <set>
 #include <sstream>
 #include <variant>
 
@@ -465,23 +466,26 @@ void prepare_output_dir(const std::filesystem::path& dir) {
 /// <stem>.<nnnn>.mat/.subs and module 1's <stem>.<nnnn><letter>.mat/.subs.
 bool is_output_name(const std::filesystem::path& file, const std::filesystem::path& stem) {
   namespace fs = std::filesystem;
+  // The name first (no file-system calls for the many files it rules out), then the folder.
+  const std::string name = file.filename().string(), prefix = stem.filename().string() + ".";
+  if (name.rfind(prefix, 0) != 0) return false;
+  const std::string rest = name.substr(prefix.size());
+  bool output = rest == "out" || rest == "json";
+  if (!output) {
+    std::size_t digits = 0;
+    while (digits < rest.size() && std::isdigit(static_cast<unsigned char>(rest[digits]))) ++digits;
+    std::string tail = digits >= 4 ? rest.substr(digits) : std::string();
+    if (!tail.empty() && std::islower(static_cast<unsigned char>(tail[0])) && tail[0] != '.')
+      tail = tail.substr(1);
+    output = tail == ".mat" || tail == ".subs";
+  }
+  if (!output) return false;
   std::error_code ec;
   const fs::path dir =
       fs::weakly_canonical(file.parent_path().empty() ? "." : file.parent_path(), ec);
   const fs::path out_dir =
       fs::weakly_canonical(stem.parent_path().empty() ? "." : stem.parent_path(), ec);
-  if (ec || dir != out_dir) return false;
-  const std::string name = file.filename().string(), prefix = stem.filename().string() + ".";
-  if (name.rfind(prefix, 0) != 0) return false;
-  const std::string rest = name.substr(prefix.size());
-  if (rest == "out" || rest == "json") return true;
-  std::size_t digits = 0;
-  while (digits < rest.size() && std::isdigit(static_cast<unsigned char>(rest[digits]))) ++digits;
-  if (digits < 4) return false;
-  std::string tail = rest.substr(digits);
-  if (!tail.empty() && std::islower(static_cast<unsigned char>(tail[0])) && tail[0] != '.')
-    tail = tail.substr(1);
-  return tail == ".mat" || tail == ".subs";
+  return !ec && dir == out_dir;
 }
 
 /// An output never replaces an input: the input file (x.out or x.json would be overwritten by the
@@ -489,17 +493,25 @@ bool is_output_name(const std::filesystem::path& file, const std::filesystem::pa
 void refuse_overwriting_inputs(const std::filesystem::path& input,
                                const std::filesystem::path& stem,
                                const std::vector<format::InputCase>& cases) {
-  std::vector<std::filesystem::path> inputs = files_read_by(cases);
-  inputs.insert(inputs.begin(), input);
-  for (const std::filesystem::path& file : inputs) {
-    // A file named like an output, or the same file under another name (a link to x.json).
+  namespace fs = std::filesystem;
+  // Each file once (a sweep's cases share their profiles), the input first.
+  std::vector<fs::path> inputs{input};
+  std::set<std::string> seen{input.string()};
+  for (fs::path& file : files_read_by(cases))
+    if (seen.insert(file.string()).second) inputs.push_back(std::move(file));
+  // The report and JSON that exist already: a file read may be one of them under another name.
+  std::vector<fs::path> existing;
+  for (const char* ext : {".out", ".json"}) {
+    fs::path out = stem;
+    out += ext;
+    std::error_code ec;
+    if (fs::exists(out, ec)) existing.push_back(std::move(out));
+  }
+  for (const fs::path& file : inputs) {
     bool same = false;
-    for (const char* ext : {".out", ".json"}) {
-      std::filesystem::path out = stem;
-      out += ext;
+    for (const fs::path& out : existing) {
       std::error_code ec;
-      same =
-          same || (std::filesystem::exists(out, ec) && std::filesystem::equivalent(file, out, ec));
+      same = same || fs::equivalent(file, out, ec);
     }
     if (!same && !is_output_name(file, stem)) continue;
     if (file == input)
