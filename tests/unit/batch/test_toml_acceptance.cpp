@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <variant>
 #include <vector>
@@ -89,6 +90,29 @@ TEST(TomlAcceptance, ExamplePairsDescribeTheSameProblems) {
     ++pairs;
   }
   EXPECT_GE(pairs, 8);
+}
+
+TEST(SolveCase, CheckOnlyCasesAreChecked) {
+  // solve = false (R=3, CONTACT's "check, do not compute"): a negative density in its heat
+  // table is refused as in a solved case (the checks were skipped and the run reported success).
+  const test_support::ScratchDir scratch("rollcontact_check_only");
+  const std::string text =
+      "version = 1\n[[case]]\nsolve = false\n[case.normal]\nforce_N = 100.0\n"
+      "[case.material]\nbody1 = { poisson = 0.28, shear_modulus_MPa = 82000 }\n"
+      "body2 = { poisson = 0.28, shear_modulus_MPa = 82000 }\n"
+      "[case.heat]\nbody1 = { temperature_C = 0.0, heat_capacity_J_per_kg_C = 450.0, "
+      "conductivity_W_per_mm_C = 0.05, density_kg_per_mm3 = -7.8e-6 }\n"
+      "body2 = { temperature_C = 0.0, heat_capacity_J_per_kg_C = 450.0, "
+      "conductivity_W_per_mm_C = 0.05, density_kg_per_mm3 = 7.8e-6 }\n"
+      "[case.grid]\nhertz = { elements = [10, 10], semi_axes_mm = [3.0, 2.0], scale = 1.1 }\n";
+  std::ofstream(scratch / "check.toml") << text;
+  try {
+    (void)run_input_file(scratch / "check.toml", RunOptions{});
+    FAIL() << "a check-only case with a negative density passed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("density"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(scratch / "check.out"));
 }
 
 TEST(SolveCase, GeometryErrorsNameFileLineAndCase) {
