@@ -185,11 +185,11 @@ void refuse_clashing_outputs(const RunSettings& settings) {
   namespace fs = std::filesystem;
   std::vector<std::pair<fs::path, std::string>> stems;  // output stem, its input
   for (const std::string& input : settings.inputs) {
-    const fs::path in(input);
-    const fs::path dir =
-        settings.output_dir.empty() ? in.parent_path() : fs::path(settings.output_dir);
-    std::error_code ec;
-    const fs::path stem = fs::weakly_canonical(dir.empty() ? "." : dir, ec) / in.stem();
+    const fs::path plain = batch::output_stem(input, settings.output_dir);
+    std::error_code ec;  // canonical, so that two spellings of one folder compare equal
+    const fs::path stem =
+        fs::weakly_canonical(plain.has_parent_path() ? plain.parent_path() : ".", ec) /
+        plain.filename();
     for (const auto& [other, other_input] : stems)
       if (other == stem)
         throw InputError(input, 0,

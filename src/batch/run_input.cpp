@@ -489,17 +489,18 @@ bool is_output_name(const std::filesystem::path& file, const std::filesystem::pa
   return !ec && dir == out_dir;
 }
 
-/// An output never replaces an input: the input file (x.out or x.json would be overwritten by the
-/// report of its own run) or a file its cases read (a profile named like an output).
+/// An output never replaces an input: of `files`, the input file itself (x.out or x.json would
+/// be overwritten by the report of its own run) or the files its cases read (a profile named
+/// like an output, or a link to one).
 void refuse_overwriting_inputs(const std::filesystem::path& input,
                                const std::filesystem::path& stem,
-                               const std::vector<format::InputCase>& cases) {
+                               const std::vector<std::filesystem::path>& files) {
   namespace fs = std::filesystem;
-  // Each file once (a sweep's cases share their profiles), the input first.
-  std::vector<fs::path> inputs{input};
-  std::set<std::string> seen{input.string()};
-  for (fs::path& file : files_read_by(cases))
-    if (seen.insert(file.string()).second) inputs.push_back(std::move(file));
+  // Each file once (a sweep's cases share their profiles).
+  std::vector<fs::path> inputs;
+  std::set<std::string> seen;
+  for (const fs::path& file : files)
+    if (seen.insert(file.string()).second) inputs.push_back(file);
   // The report and JSON that exist already: a file read may be one of them under another name.
   std::vector<fs::path> existing;
   for (const char* ext : {".out", ".json"}) {
@@ -565,14 +566,18 @@ double estimated_run_cost(const std::filesystem::path& input) {
   return cost;
 }
 
+std::filesystem::path output_stem(const std::filesystem::path& input,
+                                  const std::filesystem::path& output_dir) {
+  return (output_dir.empty() ? input.parent_path() : output_dir) / input.stem();
+}
+
 RunResult run_input_file(const std::filesystem::path& input, const RunOptions& options) {
-  const std::filesystem::path dir =
-      options.output_dir.empty() ? input.parent_path() : options.output_dir;
-  const std::filesystem::path stem = dir / input.stem();
-  if (is_output_name(input, stem)) refuse_overwriting_inputs(input, stem, {});
+  const std::filesystem::path stem = output_stem(input, options.output_dir);
+  const std::filesystem::path dir = stem.parent_path();
+  refuse_overwriting_inputs(input, stem, {input});  // before reading it
   const auto start = std::chrono::steady_clock::now();
   std::vector<format::InputCase> problems = read_input_file(input);
-  refuse_overwriting_inputs(input, stem, problems);
+  refuse_overwriting_inputs(input, stem, files_read_by(problems));
   validate_cases(problems);
   const double read_seconds = seconds_since(start);
   // One process checks (and creates) the folder; the others wait for it before they write.

@@ -16,6 +16,11 @@
 
 namespace rollcontact::batch {
 
+/// Where a run of `input` writes its outputs: `<output_dir>/<input's stem>` (the input's own
+/// folder when `output_dir` is empty), to which .out, .json, .<nnnn>.mat … are appended.
+std::filesystem::path output_stem(const std::filesystem::path& input,
+                                  const std::filesystem::path& output_dir);
+
 /// The files the cases read besides their input file: profiles (each slice of a slices file
 /// too) and influence-coefficient files (C=9), as resolved.
 std::vector<std::filesystem::path> files_read_by(const std::vector<format::InputCase>& cases);

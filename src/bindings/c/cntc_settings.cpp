@@ -124,7 +124,8 @@ void set_flag(const Target& t, int code, int value) {
       c.flags.sens = clamp(value, 0, 3);
       return;
     case CNTC_ic_sbsout:
-      c.flags.sbsout = clamp(value, 0, 4) == 3 ? 2 : clamp(value, 0, 4);
+      c.flags.sbsout = clamp(value, 0, 4);
+      if (c.flags.sbsout == 3) c.flags.sbsout = 2;
       return;
     case CNTC_ic_sbsfil:
       c.flags.sbsfil = value >= 0 && value <= 2 ? value : 0;

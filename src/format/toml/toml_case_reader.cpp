@@ -69,16 +69,7 @@ CaseRecord read_case(Table& c, const Context& ctx, Sequence& seq, const std::str
                                   : fmt::format("result element {} contact problem {}",
                                                 p.result_element, p.contact_problem);
   if (prev == seq.last.end()) {
-    if (d.p != 2) {
-      warn(fmt::format("previous_state \"{}\" overridden to \"new\" in the first case of {}",
-                       schema::name_of(schema::previous_state, d.p), element));
-      d.p = 2;
-    }
-    if (d.i != 0) {
-      warn(fmt::format("initial_estimate \"{}\" overridden to \"none\" in the first case of {}",
-                       schema::name_of(schema::initial_estimate, d.i), element));
-      d.i = 0;
-    }
+    start_new_sequence(d, element, p.source.warnings);
   } else if (d.p != 2 || d.i != 0) {
     // Continuing from the previous case needs the same elements, possibly shifted by whole ones.
     const GridExtent ext = grid_extent(p.potential);

@@ -358,10 +358,10 @@ void read_material(Table& c, const Context& ctx, CaseRecord& p, bool wheel_rail)
     m.model_params[o + 2] = s.real("beta");
     if (!(m.model_params[o] > 0.0))
       s.fail_key("k0", fmt::format("{} must be positive", m.model_params[o]));
-    for (const char* key : {"alpha", "beta"}) {
-      const double v = m.model_params[o + (key[0] == 'a' ? 1 : 2)];
-      if (!(v >= 0.0)) s.fail_key(key, fmt::format("{} must not be negative", v));
-    }
+    if (!(m.model_params[o + 1] >= 0.0))
+      s.fail_key("alpha", fmt::format("{} must not be negative", m.model_params[o + 1]));
+    if (!(m.model_params[o + 2] >= 0.0))
+      s.fail_key("beta", fmt::format("{} must not be negative", m.model_params[o + 2]));
     s.finish();
   } else {
     t.forbid("slope_reduction", "only with the fastsim and fastrip models");
@@ -380,6 +380,22 @@ void read_material(Table& c, const Context& ctx, CaseRecord& p, bool wheel_rail)
   if (d.m == 1 && std::abs(p.kinematics.chi) > 1e-9)
     t.fail_key("model", "\"viscoelastic\" requires rolling direction_rad = 0");
   t.finish();
+}
+
+void start_new_sequence(ControlDigits& d, const std::string& element,
+                        std::vector<std::string>& warnings) {
+  if (d.p != 2) {
+    warnings.push_back(
+        fmt::format("previous_state \"{}\" overridden to \"new\" in the first case of {}",
+                    schema::name_of(schema::previous_state, d.p), element));
+    d.p = 2;
+  }
+  if (d.i != 0) {
+    warnings.push_back(
+        fmt::format("initial_estimate \"{}\" overridden to \"none\" in the first case of {}",
+                    schema::name_of(schema::initial_estimate, d.i), element));
+    d.i = 0;
+  }
 }
 
 }  // namespace rollcontact::format::toml_input

@@ -36,5 +36,10 @@ void read_heat(Table& c, CaseRecord& p);
 void read_subsurface(Table& c, CaseRecord& p);
 /// Checks that need the grid: per-element arrays and friction rows.
 void check_grid_sizes(Table& c, const CaseRecord& p);
+/// The first case of a sequence (`element` names it: "result element 3") starts a new one:
+/// previous_state other than "new" and initial_estimate other than "none" are overridden, a
+/// warning each (spec/inp-format.md §3.2).
+void start_new_sequence(ControlDigits& d, const std::string& element,
+                        std::vector<std::string>& warnings);
 
 }  // namespace rollcontact::format::toml_input

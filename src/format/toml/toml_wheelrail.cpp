@@ -305,20 +305,8 @@ WheelRailRecord read_wheelrail_case(Table& c, const Context& ctx, const std::str
   // the first case of a result element starts a new one (spec/inp-format.md §3.2).
   d.p = c.choice_or("previous_state", schema::previous_state, 2);
   d.i = c.choice_or("initial_estimate", schema::initial_estimate, 0);
-  if (case_number == 1 && d.p != 2) {
-    r.source.warnings.push_back(
-        fmt::format("previous_state \"{}\" overridden to \"new\" in the first case of result "
-                    "element {}",
-                    schema::name_of(schema::previous_state, d.p), r.result_element));
-    d.p = 2;
-  }
-  if (case_number == 1 && d.i != 0) {
-    r.source.warnings.push_back(
-        fmt::format("initial_estimate \"{}\" overridden to \"none\" in the first case of "
-                    "result element {}",
-                    schema::name_of(schema::initial_estimate, d.i), r.result_element));
-    d.i = 0;
-  }
+  if (case_number == 1)
+    start_new_sequence(d, fmt::format("result element {}", r.result_element), r.source.warnings);
   const bool case_level_gap_weighting = c.has("gap_weighting");
   d.gapwgt = c.choice_or("gap_weighting", schema::gap_weighting, 0);
   d.g = shared.solver.method;

@@ -33,6 +33,27 @@ const fs::path& with_profiles(const test_support::ScratchDir& scratch) {
   return scratch.path();
 }
 
+/// The example case's text with the first `from` replaced by `to` (`from` empty: as it is).
+std::string toml_case_with(const std::string& from = {}, const std::string& to = {}) {
+  std::ifstream in(toml_case);
+  std::stringstream all;
+  all << in.rdbuf();
+  std::string text = all.str();
+  if (!from.empty()) text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+/// The message of the InputError that reading `text`, written to `file`, throws, or "accepted".
+std::string read_error(const fs::path& file, const std::string& text) {
+  std::ofstream(file) << text;
+  try {
+    (void)format::read_toml_input_file(file);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
 TEST(TomlWheelRail, SameForcesAsTheInpCase) {
   REQUIRE_EXAMPLES();
   const test_support::ScratchDir scratch("rollcontact_toml_wheelrail");
@@ -65,12 +86,8 @@ TEST(TomlWheelRail, ErrorsNameFileLineAndKey) {
   REQUIRE_EXAMPLES();
   const test_support::ScratchDir scratch("rollcontact_toml_wheelrail_errors");
   const fs::path& dir = with_profiles(scratch);
-  std::ifstream in(toml_case);
-  std::stringstream all;
-  all << in.rdbuf();
-  std::string text = all.str();
-  const std::string from = "file = \"MBench_S1002_v3.prw\"";
-  text.replace(text.find(from), from.size(), "file = \"missing.prw\"");
+  const std::string text =
+      toml_case_with("file = \"MBench_S1002_v3.prw\"", "file = \"missing.prw\"");
   std::ofstream(dir / "bad.toml") << text;
   try {
     (void)format::read_toml_input_file(dir / "bad.toml");
@@ -92,20 +109,8 @@ TEST(TomlWheelRail, ProfileChecksAreTheInpReadersWithTheirKeys) {
   REQUIRE_EXAMPLES();
   const test_support::ScratchDir scratch("rollcontact_toml_wheelrail_profiles");
   const fs::path& dir = with_profiles(scratch);
-  std::ifstream in(toml_case);
-  std::stringstream all;
-  all << in.rdbuf();
-  const std::string good = all.str();
   const auto refused = [&](const std::string& from, const std::string& to) {
-    std::string text = good;
-    text.replace(text.find(from), from.size(), to);
-    std::ofstream(dir / "bad.toml") << text;
-    try {
-      (void)format::read_toml_input_file(dir / "bad.toml");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
+    return read_error(dir / "bad.toml", toml_case_with(from, to));
   };
   const std::string wheel = "file = \"MBench_S1002_v3.prw\"";
   const std::string metres = refused(wheel, wheel + "\nscale = 0.001");
@@ -149,14 +154,8 @@ TEST(TomlWheelRail, CaseKeysOfModule3AreReadOrRefusedNeverIgnored) {
   REQUIRE_EXAMPLES();
   const test_support::ScratchDir scratch("rollcontact_toml_wheelrail_case_keys");
   const fs::path& dir = with_profiles(scratch);
-  std::ifstream in(toml_case);
-  std::stringstream all;
-  all << in.rdbuf();
-  const std::string good = all.str();
   const auto read = [&](const std::string& from, const std::string& to) {
-    std::string text = good;
-    text.replace(text.find(from), from.size(), to);
-    std::ofstream(dir / "variant.toml") << text;
+    std::ofstream(dir / "variant.toml") << toml_case_with(from, to);
     try {
       return format::read_toml_input_file(dir / "variant.toml");
     } catch (const InputError& e) {
@@ -165,15 +164,7 @@ TEST(TomlWheelRail, CaseKeysOfModule3AreReadOrRefusedNeverIgnored) {
     }
   };
   const auto refused = [&](const std::string& from, const std::string& to) {
-    std::string text = good;
-    text.replace(text.find(from), from.size(), to);
-    std::ofstream(dir / "variant.toml") << text;
-    try {
-      (void)format::read_toml_input_file(dir / "variant.toml");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
+    return read_error(dir / "variant.toml", toml_case_with(from, to));
   };
   const std::string head = "[[case]]\n";
   const auto named = read(head, head + "name = \"y = 3 mm\"\n");
@@ -185,19 +176,12 @@ TEST(TomlWheelRail, CaseKeysOfModule3AreReadOrRefusedNeverIgnored) {
                                    "combination_mm = 4.0\ngap_weights = "
                                    "\"squared\"");
   EXPECT_EQ(both.find("contradicts"), std::string::npos) << "no case-level value: " << both;
-  std::string twice = good;
-  twice.replace(twice.find("combination_mm = 4.0"), 20,
-                "combination_mm = 4.0\ngap_weights = \"squared\"");
+  std::string twice =
+      toml_case_with("combination_mm = 4.0", "combination_mm = 4.0\ngap_weights = \"squared\"");
   twice.replace(twice.find(head), head.size(), head + "gap_weighting = \"linear\"\n");
-  std::ofstream(dir / "twice.toml") << twice;
-  try {
-    (void)format::read_toml_input_file(dir / "twice.toml");
-    ADD_FAILURE() << "contradicting gap weightings were read";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("discretisation.gap_weights: contradicts"),
-              std::string::npos)
-        << e.what();
-  }
+  const std::string contradiction = read_error(dir / "twice.toml", twice);
+  EXPECT_NE(contradiction.find("discretisation.gap_weights: contradicts"), std::string::npos)
+      << contradiction;
   const std::string rows =
       refused("static = 0.3\nkinetic = 0.3\n", "rows = [{ static = 0.3, kinetic = 0.3 }]\n");
   EXPECT_NE(rows.find("friction.rows"), std::string::npos) << rows;
@@ -304,21 +288,9 @@ TEST(TomlWheelRail, FrictionPointsAreCheckedWithTheirKeys) {
   REQUIRE_EXAMPLES();
   const test_support::ScratchDir scratch("rollcontact_toml_friction_points");
   const fs::path& dir = with_profiles(scratch);
-  std::ifstream in(toml_case);
-  std::stringstream all;
-  all << in.rdbuf();
-  const std::string base = all.str();
   const std::string coulomb = "static = 0.3\nkinetic = 0.3\n";
   auto wheel_rail_message = [&](const std::string& friction) {
-    std::string text = base;
-    text.replace(text.find(coulomb), coulomb.size(), friction);
-    std::ofstream(dir / "f.toml") << text;
-    try {
-      (void)format::read_toml_input_file(dir / "f.toml");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
+    return read_error(dir / "f.toml", toml_case_with(coulomb, friction));
   };
   std::string eleven = "along = \"track\"\npoints = [";
   for (int k = 0; k < 11; ++k) eleven += fmt::format("{{ at = {}, kinetic = 0.3 }}, ", k);
