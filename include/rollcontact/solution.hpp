@@ -50,9 +50,19 @@ struct CombinedMaterial {
   /// The traction elements of the closed forms: piecewise constant (C=2) or bilinear (C=3,
   /// elastic/bilinear_kernel.hpp). Ignored with a table.
   model::TractionElements elements = model::TractionElements::piecewise_constant;
+  /// Blanco's correction (C=4, model::InclinationCorrection): its variant (0: none) and the
+  /// surface's curvature dα/dy [rad/mm] of the constant-curvature method; the coefficient of an
+  /// offset Δy [mm] is turned by the inclinations' difference −curvature·Δy.
+  int inclination_variant = 0;
+  double inclination_curvature_per_mm = 0.0;
 
   bool viscoelastic() const noexcept {
     return viscous[0].weight != 0.0 || viscous[1].weight != 0.0;
+  }
+  /// The coefficients are turned: a correction with a curvature (a zero curvature leaves them
+  /// those of the plain half-space, bit for bit).
+  bool inclination_corrected() const noexcept {
+    return inclination_variant != 0 && inclination_curvature_per_mm != 0.0;
   }
 };
 

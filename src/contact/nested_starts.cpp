@@ -70,6 +70,8 @@ bool steady_coarse_start(PatchSolver::Impl& st, int level, const tangential::Tan
       static_cast<std::size_t>(std::count(sys.contact.begin(), sys.contact.end(), char{1}));
   if (ncon < min_contact || grid.mx < 16 || grid.my < 16) return false;
   if (material.table) return false;  // a file's coefficients (C=9) exist for its element size only
+  // The coarse steady-rolling set has no C_yx of its own, which turned coefficients need (C=4).
+  if (material.inclination_corrected()) return false;
   const Grid coarse{(grid.mx + 1) / 2, (grid.my + 1) / 2, grid.xl,
                     grid.yl,           2.0 * grid.dx,     2.0 * grid.dy};
   const std::size_t nc = coarse.size();

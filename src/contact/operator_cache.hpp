@@ -33,7 +33,8 @@ struct TangentialOperators : elastic::operators::TangentialOperatorSet {
   std::unique_ptr<tangential::TangentialPreconditioner> preconditioner;
 
   tangential::TangentialOperator view() const {
-    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), !steady(), interaction.get()};
+    return {&xx,         &xy,      &a_yx(),          &yy, a.get(), preconditioner.get(),
+            symmetric(), steady(), interaction.get()};
   }
 };
 
@@ -42,7 +43,7 @@ struct CoarseSteadyOperators : elastic::operators::SteadyRollingOperatorSet {
   std::unique_ptr<tangential::TangentialPreconditioner> preconditioner;
 
   tangential::TangentialOperator view() const {
-    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), false};
+    return {&xx, &xy, &xy, &yy, a.get(), preconditioner.get(), false, true};
   }
 };
 
@@ -69,8 +70,10 @@ struct OperatorKey {
            a.material.layer_compliance == b.material.layer_compliance &&
            a.material.normal_layer_compliance == b.material.normal_layer_compliance &&
            a.material.viscous == b.material.viscous && same_table(a.material, b.material) &&
-           a.material.elements == b.material.elements && a.kind == b.kind &&
-           a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
+           a.material.elements == b.material.elements &&
+           a.material.inclination_variant == b.material.inclination_variant &&
+           a.material.inclination_curvature_per_mm == b.material.inclination_curvature_per_mm &&
+           a.kind == b.kind && a.shift_x == b.shift_x && a.shift_y == b.shift_y &&
            elastic::same_interaction(a.interaction, b.interaction);
   }
 };

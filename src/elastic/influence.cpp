@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "elastic/bilinear_kernel.hpp"
+#include "elastic/inclination_correction.hpp"
 #include "elastic/table_kernel.hpp"
 #include "elastic/viscous_kernel.hpp"
 #include "rollcontact/errors.hpp"
@@ -521,6 +522,8 @@ void finish_kernels(const std::vector<Component>& cs, const Grid& grid,
 std::vector<Kernel> make_kernels(const std::vector<Component>& cs, const Grid& grid,
                                  const CombinedMaterial& material, double shift_x, double shift_y) {
   check_grid(material, grid);
+  if (material.inclination_corrected())
+    return inclination_corrected_kernels(cs, grid, material, shift_x, shift_y);
   if (material.table) {
     std::vector<Kernel> out;
     out.reserve(cs.size());

@@ -49,9 +49,13 @@ inline constexpr double kCouplingThreshold = 1e-6;
 
 /// True when the material couples the normal and tangential problems (|K| ≥ threshold, or a
 /// viscous part with a coupling of that size: dissimilar viscoelastic bodies). Coefficients from
-/// a file couple when the file has coupling terms, whatever K the material lines give.
+/// a file couple when the file has coupling terms, whatever K the material lines give; turned
+/// coefficients (C=4 with a curvature) always couple.
 inline bool is_coupled(const CombinedMaterial& material) noexcept {
   if (material.table) return material.table->coupled;
+  // Turned coefficients (C=4) carry part of a normal load into tangential displacements and
+  // back even for quasi-identical bodies (wheelrail-advanced.md §1.7).
+  if (material.inclination_corrected()) return true;
   const auto large = [](double k) { return k >= kCouplingThreshold || k <= -kCouplingThreshold; };
   return large(material.k) || large(material.viscous[0].weight * material.viscous[0].k) ||
          large(material.viscous[1].weight * material.viscous[1].k);

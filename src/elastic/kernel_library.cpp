@@ -79,7 +79,9 @@ bool KernelLibrary::matches(const Entry& e, Component c, const Grid& grid,
   return e.c == c && e.dx == grid.dx && e.dy == grid.dy && e.g == m.g && e.nu == m.nu &&
          e.k == m.k && e.layer == m.layer_compliance &&
          e.normal_layer == m.normal_layer_compliance && e.shift_x == shift_x &&
-         e.shift_y == shift_y && e.viscous == m.viscous && e.elements == m.elements;
+         e.shift_y == shift_y && e.viscous == m.viscous && e.elements == m.elements &&
+         e.inclination_variant == m.inclination_variant &&
+         e.inclination_curvature == m.inclination_curvature_per_mm;
 }
 
 std::optional<Kernel> KernelLibrary::cut_kept(Component c, const Grid& grid,
@@ -178,6 +180,7 @@ std::vector<Kernel> KernelLibrary::kernels(const std::vector<Component>& cs, con
       out[q] = cut_kernel(made[k], grid.mx, grid.my);
       entries_.push_front({cs[q], grid.dx, grid.dy, m.g, m.nu, m.k, m.layer_compliance,
                            m.normal_layer_compliance, shift_x, shift_y, m.viscous, m.elements,
+                           m.inclination_variant, m.inclination_curvature_per_mm,
                            std::move(made[k])});
       kept_bytes_ += bytes_of(entries_.front().kernel);
     }

@@ -49,6 +49,8 @@ class KernelLibrary {
     double dx, dy, g, nu, k, layer, normal_layer, shift_x, shift_y;
     std::array<ViscousCompliance, 2> viscous;
     model::TractionElements elements;
+    int inclination_variant;
+    double inclination_curvature;
     Kernel kernel;
   };
   static bool matches(const Entry& e, Component c, const Grid& grid, const CombinedMaterial& m,

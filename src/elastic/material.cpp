@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "elastic/inclination_correction.hpp"
 #include "rollcontact/errors.hpp"
 
 namespace rollcontact::elastic {
@@ -59,6 +60,14 @@ CombinedMaterial combine_bodies(const model::Bodies& b, double velocity_mm_s) {
   m.normal_layer_compliance = b.normal_layer_flexibility_mm3_N;
   m.table = b.influence_table;
   m.elements = b.traction_elements;
+  if (b.inclination.active()) {
+    if (b.inclination.varying_curvature)
+      throw NotSupportedError(
+          "not supported yet: the inclination correction (C=4) with varying curvature "
+          "(IF_METH=1); IF_METH=0 fits the table with a constant curvature");
+    m.inclination_variant = b.inclination.variant;
+    m.inclination_curvature_per_mm = inclination_curvature(b.inclination);
+  }
   if (!b.viscoelastic) return m;
   for (const model::ViscoelasticBody* v : {&b.viscous1, &b.viscous2})
     if (!(v->creep_ratio >= 0.0 && v->relaxation_time_s >= 0.0))

@@ -148,7 +148,7 @@ TangentialResult solve_convex_gs(const TangentialSystem& sys, const TangentialSe
   iterate_with_acceleration(
       sys, settings, res,
       [&](std::vector<double>& px, std::vector<double>& py) { sweeper.sweep(px, py, settings); },
-      sys.a.symmetric ? "ConvexGS" : "SteadyGS");
+      sys.a.steady ? "SteadyGS" : "ConvexGS");
   finalise(sys, res);
   return res;
 }

@@ -42,7 +42,7 @@ class PreconditionedJacobi {
         ry_[i] = -sy_[i];
       }
     }
-    if (sys_.a.symmetric)
+    if (!sys_.a.steady)
       adhesion_cg_steps(px, py);
     else
       steady_step(px, py);

@@ -15,7 +15,8 @@
 // converges superlinearly once the adhesion/slip division has settled (Hintermüller, Ito &
 // Kunisch 2002; Hüeber, Stadler & Wohlmuth 2008 for Coulomb friction). The reduced system in
 // the adhesion tractions and the slip angles is QᵀAQ + D: symmetric positive definite for
-// shifts and transient rolling (solved by PCG), non-symmetric for steady rolling (GMRES). Both
+// shifts and transient rolling (solved by PCG), non-symmetric for steady rolling and for
+// coefficients turned by a one-sided inclination correction (C=4 variants 1–3; GMRES). Both
 // are preconditioned by the block-circulant approximation of A⁻¹ on the adhesion elements and
 // on slip elements near the slip onset, and by the diagonal elsewhere. A backtracking line
 // search on ‖F‖ globalises the iteration. Each Krylov iteration costs one FFT product.
@@ -63,7 +64,7 @@ class SemismoothNewton {
     // steady rolling the adhesion front moves about one element per step along the rows;
     // 0.5 measured best there (287×323: 268, 161 and 507 products at 0.2, 0.5 and 0.8; see
     // docs/decisions.md).
-    r_ = (sys.a.symmetric ? 0.03 : 0.5) * 2.0 / (d_[0] + d_[3]);
+    r_ = (sys.a.steady ? 0.5 : 0.03) * 2.0 / (d_[0] + d_[3]);
     for (auto* v : {&sx_, &sy_, &fx_, &fy_, &ux_, &uy_, &ax_, &ay_}) v->assign(n_, 0.0);
   }
 
@@ -235,7 +236,7 @@ class SemismoothNewton {
     };
     const core::LinearMap prec = [&](const std::vector<double>& v, std::vector<double>& out) {
       scatter(v, fx_, fy_, true);
-      if (!sys_.a.symmetric) cumulative_sum_from_leading_edge(sys_.grid, sys_.chi, fx_, fy_);
+      if (sys_.a.steady) cumulative_sum_from_leading_edge(sys_.grid, sys_.chi, fx_, fy_);
       sys_.a.preconditioner->apply(fx_.data(), fy_.data(), ux_.data(), uy_.data());
       out.resize(nu);
       for (std::size_t k = 0; k < elements_.size(); ++k) {

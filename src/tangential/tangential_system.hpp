@@ -33,6 +33,9 @@ struct TangentialOperator {
   /// a cumulative sum along each row from the leading edge.
   TangentialPreconditioner* preconditioner = nullptr;
   bool symmetric = true;  ///< A = Aᵀ (shift and transient rolling); false: steady rolling
+  /// Steady rolling: A = (I − T)·C_tt/G (the preconditioner takes (I − T)⁻¹ as well). Apart
+  /// from `symmetric` because turned coefficients (C=4) make A of a shift non-symmetric too.
+  bool steady = false;
   /// Attenuation between parts of the grid, already inside `product`; solvers that use kernel
   /// entries directly (Gauss–Seidel) apply f(part I, part J) themselves. nullptr: none.
   const elastic::Interaction* interaction = nullptr;

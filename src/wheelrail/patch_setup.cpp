@@ -310,6 +310,26 @@ void setup_planar_grid(const model::WheelRailProblem& p, const PlacedProfiles& p
                        PatchSetup& s, std::vector<std::string>& warnings);
 }  // namespace
 
+namespace {
+/// The inclination table of the influence coefficients' correction (C=4, wheelrail-advanced.md
+/// §1.7): a conformal patch's rows at their curvilinear positions with their inclinations, the
+/// plane of a planar patch as one inclination (no correction).
+void set_inclinations(const PatchSetup& s, model::InclinationCorrection& c) {
+  if (!c.active()) return;
+  c.y_mm.clear();
+  c.alpha_rad.clear();
+  if (!s.curved) {
+    c.y_mm.push_back(0.0);
+    c.alpha_rad.push_back(s.frame.delta_rad);
+    return;
+  }
+  for (std::size_t i = 0; i < s.curved->rows(); ++i) {
+    c.y_mm.push_back(s.curved->s_tilde(i));
+    c.alpha_rad.push_back(s.curved->alpha[i]);
+  }
+}
+}  // namespace
+
 PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& prof,
                        const WheelsetPose& pose, const ContactRegion& region,
                        std::vector<std::string>& warnings, const SuperGridBox* previous_contact) {
@@ -356,6 +376,7 @@ PatchSetup setup_patch(const model::WheelRailProblem& p, const PlacedProfiles& p
     s.kinematics = patch_kinematics(p, pose, prof, s.frame, s.pen_mm);
   }
   set_attenuated_parts(prof, region, s.frame, q.gap);
+  set_inclinations(s, q.bodies.inclination);
   q.normal.kind = model::NormalLoadKind::Approach;
   q.normal.approach_mm = s.pen_mm;
   q.tangential.creepage = {s.kinematics.xi, s.kinematics.eta, s.kinematics.phi_per_mm};

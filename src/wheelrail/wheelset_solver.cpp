@@ -107,7 +107,13 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
         "on the rail (check Y_WS, the gauge and the profiles' orientation)");
   WheelRailSolution out;
   out.z_ws_mm = z_ws;
-  out.material = elastic::combine_bodies(p.patch.bodies, std::abs(model::rolling_speed_mm_s(p)));
+  // The wheel's combined constants (the report's MATERIAL CONSTANTS); the inclination
+  // correction (C=4) belongs to each patch, whose rows give its table (setup_patch).
+  model::Bodies bodies = p.patch.bodies;
+  bodies.inclination.y_mm.clear();
+  bodies.inclination.alpha_rad.clear();
+  bodies.inclination.variant = 0;
+  out.material = elastic::combine_bodies(bodies, std::abs(model::rolling_speed_mm_s(p)));
   if (!normal_only) {
     last_solve_turned = false;
     approximate_problems.clear();  // this solve's patches replace the last full solve's

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "rollcontact/model/influence_table.hpp"
 #include "rollcontact/model/traction_elements.hpp"
@@ -74,6 +75,26 @@ struct ViscoelasticBody {
   }
 };
 
+/// CONTACT C=4 (experimental): Blanco-Lorenzo's correction of the half-space influence
+/// coefficients for a contact surface whose inclination changes across the grid rows
+/// (spec-additions.md §B8, wheelrail-advanced.md §1.7): the load at one element and the
+/// displacement at another are turned into each other's local frames by the difference of the
+/// surface inclinations there. The inclination α [rad] is the turn of the surface's local frame
+/// about +x (right-hand rule; positive when the normal tips towards +y).
+struct InclinationCorrection {
+  /// VARIANT: 1 turns the load (Blanco), 2 as 1 without the x-n term, 3 turns the displacement
+  /// (Vollebregt), 4 turns both halfway (symmetric); 0: no correction (C=2).
+  int variant = 0;
+  /// IF_METH = 1: the table row by row (varying curvature); 0: its least-squares straight line,
+  /// α = c₀ + c₁·y (constant curvature), one set of coefficients for all rows.
+  bool varying_curvature = false;
+  /// The inclination table: lateral positions y [mm] of the grid (module 3: the .inp's NN
+  /// pairs; module 1: the rows of a conformal patch's curved reference) and α there [rad].
+  std::vector<double> y_mm, alpha_rad;
+
+  [[nodiscard]] bool active() const noexcept { return variant != 0; }
+};
+
 struct Bodies {
   ElasticBody body1;  ///< the upper body; tractions act on it (glassy modulus if viscoelastic)
   ElasticBody body2;
@@ -93,6 +114,8 @@ struct Bodies {
   std::shared_ptr<const InfluenceTable> influence_table;
   /// CONTACT C=3: bilinear traction elements instead of piecewise constant ones (C=2).
   TractionElements traction_elements = TractionElements::piecewise_constant;
+  /// CONTACT C=4: the surface inclination's correction of the coefficients; inactive: none.
+  InclinationCorrection inclination;
 };
 
 }  // namespace rollcontact::model

@@ -24,12 +24,13 @@ std::vector<Kernel> tabulate(KernelLibrary* library, const std::vector<Component
                             : make_kernels(cs, grid, material, shift_x, shift_y);
 }
 
-/// xx, xy, yy and, when coupled, xn, yn at the shift.
+/// xx, xy, yy, when coupled xn, yn, and when turned (C=4) yx, in that order, at the shift.
 std::vector<Kernel> tangential_kernels(KernelLibrary* library, const Grid& grid,
                                        const CombinedMaterial& material, bool coupled,
                                        double shift_x, double shift_y) {
   std::vector<Component> cs{Component::xx, Component::xy, Component::yy};
   if (coupled) cs.insert(cs.end(), {Component::xn, Component::yn});
+  if (material.inclination_corrected()) cs.push_back(Component::yx);
   return tabulate(library, cs, grid, material, shift_x, shift_y);
 }
 
@@ -54,11 +55,13 @@ void assemble_plain(TangentialOperatorSet& s, bool coupled, FftChoice fft, Kerne
   const CombinedMaterial& material = s.material;
   std::vector<Component> cs{Component::xx, Component::xy, Component::yy, Component::nn};
   if (coupled) cs.insert(cs.end(), {Component::xn, Component::yn, Component::nx, Component::ny});
+  if (s.turned()) cs.push_back(Component::yx);
   std::vector<Kernel> k = tabulate(lib, cs, grid, material);
   s.c_xx = std::move(k[0]);
   s.c_xy = std::move(k[1]);
   s.c_yy = std::move(k[2]);
   s.c_nn = std::move(k[3]);
+  if (s.turned()) s.c_yx = std::move(k.back());
   if (coupled) {
     s.c_xn = std::move(k[4]);
     s.c_yn = std::move(k[5]);
@@ -78,8 +81,9 @@ BlockConvolution& TangentialOperatorSet::full_product() {
     const Kernel* yn = k ? &c_yn : nullptr;
     const Kernel* nx = k ? &nt_x : nullptr;
     const Kernel* ny = k ? &nt_y : nullptr;
+    const Kernel* c_yx_or_xy = turned() ? &c_yx : &c_xy;
     full_ = std::make_unique<BlockConvolution>(
-        3, 3, std::vector<const Kernel*>{&c_xx, &c_xy, xn, &c_xy, &c_yy, yn, nx, ny, &c_nn},
+        3, 3, std::vector<const Kernel*>{&c_xx, &c_xy, xn, c_yx_or_xy, &c_yy, yn, nx, ny, &c_nn},
         fft.backend, fft.planning, &spectra);
     full_->set_interaction(interaction);
   }
@@ -90,8 +94,8 @@ BlockConvolution& TangentialOperatorSet::tangential_product() {
   if (!steady()) return *a;  // A = C_tt
   if (!plain_tt_) {
     plain_tt_ = std::make_unique<BlockConvolution>(
-        2, 2, std::vector<const Kernel*>{&c_xx, &c_xy, &c_xy, &c_yy}, fft.backend, fft.planning,
-        &spectra);
+        2, 2, std::vector<const Kernel*>{&c_xx, &c_xy, turned() ? &c_yx : &c_xy, &c_yy},
+        fft.backend, fft.planning, &spectra);
     plain_tt_->set_interaction(interaction);
   }
   return *plain_tt_;
@@ -110,6 +114,7 @@ void assemble_steady_part(TangentialOperatorSet& s, bool coupled, KernelLibrary*
     s.tn_x = difference(s.c_xn, k[3]);
     s.tn_y = difference(s.c_yn, k[4]);
   }
+  if (s.turned()) s.yx = difference(s.c_yx, k.back());
 }
 
 /// Shift and transient rolling: A = C, and the previous-time displacement of the particles now
@@ -125,8 +130,10 @@ void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice f
     s.tn_x = s.c_xn;
     s.tn_y = s.c_yn;
   }
+  if (s.turned()) s.yx = s.c_yx;
   std::vector<Kernel> k;
   if (rolling) k = tangential_kernels(lib, s.grid, s.material, coupled, sx, sy);
+  if (s.turned()) s.prev_yx = rolling ? std::move(k.back()) : s.yx;
   s.prev_xx = rolling ? std::move(k[0]) : s.xx;
   s.prev_xy = rolling ? std::move(k[1]) : s.xy;
   s.prev_yy = rolling ? std::move(k[2]) : s.yy;
@@ -134,9 +141,10 @@ void assemble_transient_part(TangentialOperatorSet& s, bool coupled, FftChoice f
     s.prev_xn = rolling ? std::move(k[3]) : s.c_xn;
     s.prev_yn = rolling ? std::move(k[4]) : s.c_yn;
   }
+  const Kernel* prev_yx = s.turned() ? &s.prev_yx : &s.prev_xy;
   s.prev = std::make_unique<BlockConvolution>(
       2, 3,
-      std::vector<const Kernel*>{&s.prev_xx, &s.prev_xy, coupled ? &s.prev_xn : nullptr, &s.prev_xy,
+      std::vector<const Kernel*>{&s.prev_xx, &s.prev_xy, coupled ? &s.prev_xn : nullptr, prev_yx,
                                  &s.prev_yy, coupled ? &s.prev_yn : nullptr},
       fft.backend, fft.planning, &spectra);
 }
@@ -172,7 +180,7 @@ void assemble_tangential(TangentialOperatorSet& set, const Grid& grid,
   else
     assemble_transient_part(set, coupled, fft, lib, spectra);
   set.a = std::make_unique<BlockConvolution>(
-      2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.xy, &set.yy}, fft.backend,
+      2, 2, std::vector<const Kernel*>{&set.xx, &set.xy, &set.a_yx(), &set.yy}, fft.backend,
       fft.planning, &spectra);
   if (coupled)
     set.tn =

@@ -64,11 +64,23 @@ struct TangentialOperatorSet {
   Kernel tn_x, tn_y, nt_x, nt_y;
   std::unique_ptr<BlockConvolution> tn, nt;
   Kernel c_xx, c_xy, c_yy, c_xn, c_yn, c_nn;
+  /// C_yx of turned coefficients (C=4, turned()), which differs from C_xy; empty otherwise (the
+  /// products use C_xy for it, the half-space's symmetry).
+  Kernel c_yx, yx, prev_yx;
   FftChoice fft;          ///< of the products, for full_product()
   SpectrumCache spectra;  ///< the kernels' spectra the products share
 
   bool steady() const noexcept { return kind == model::TangentialKind::SteadyRolling; }
   bool coupled() const noexcept { return is_coupled(material); }
+  /// The coefficients are turned by the surface's inclination (C=4): C_yx has its own kernels.
+  bool turned() const noexcept { return material.inclination_corrected(); }
+  /// The yx kernel of A (xy where the coefficients are not turned).
+  const Kernel& a_yx() const noexcept { return turned() ? yx : xy; }
+  /// A = Aᵀ: shifts and transient rolling, unless turned by a variant other than the symmetric
+  /// one (4).
+  bool symmetric() const noexcept {
+    return !steady() && (!turned() || material.inclination_variant == 4);
+  }
   /// The plain 3×3 C, with the set's interaction.
   BlockConvolution& full_product();
   /// The plain 2×2 C_tt, with the set's interaction: `a` itself unless steady rolling, else

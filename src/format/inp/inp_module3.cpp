@@ -546,8 +546,10 @@ CaseRecord Module3Reader::read_case(InpStream& in, int reid, int cpid, int modul
     if (d.s == 3) st.has_subsurface = true;
   }
 
-  // Overrides after reading.
-  if (p.solver.maxout > 1 && std::abs(material_k(p.materials)) < 1e-10) {
+  // Overrides after reading. The inclination correction (C=4) couples the problems whatever K
+  // is, and keeps MAXOUT (spec-additions.md §B8).
+  if (p.solver.maxout > 1 && std::abs(material_k(p.materials)) < 1e-10 &&
+      p.materials.influence_type != 4) {
     p.source.warnings.push_back(fmt::format(
         "MAXOUT = {} overridden to 1: the materials are quasi-identical (K = 0)", p.solver.maxout));
     p.solver.maxout = 1;

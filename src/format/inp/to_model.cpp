@@ -162,7 +162,12 @@ void check_supported(const CaseRecord& record) {
   if (d.m == 5 && d.t == 2) not_supported("FaStrip M=5 with transient rolling T=2");
   // The coefficients in effect (C=0, 1 keep the previous case's).
   const int c = record.materials.influence_type;
-  if (c == 4) not_supported(fmt::format("influence coefficients C={}", c));
+  if (c == 4 && d.m == 1)
+    not_supported("the inclination correction C=4 with viscoelastic bodies M=1");
+  if (c == 4 && record.materials.conformal.if_meth == 1)
+    not_supported(
+        "the inclination correction C=4 with varying curvature (IF_METH=1); IF_METH=0 fits the "
+        "table with a constant curvature");
   // Bilinear elements (C=3): the viscous parts of M=1 and the subsurface stresses integrate
   // piecewise-constant tractions, which would not match the bilinear surface solution.
   if (c == 3 && d.m == 1)
@@ -216,6 +221,15 @@ model::PatchProblem to_patch_problem(const CaseRecord& record) {
   }
   if (record.materials.influence_type == 3)
     p.bodies.traction_elements = model::TractionElements::bilinear;
+  if (record.materials.influence_type == 4) {
+    // Module 3 gives the inclination table; module 1 has none on the .inp line and takes each
+    // conformal patch's row inclinations (wheelrail/patch_setup).
+    const Materials::Conformal& cf = record.materials.conformal;
+    p.bodies.inclination.variant = cf.variant;
+    p.bodies.inclination.varying_curvature = cf.if_meth == 1;
+    p.bodies.inclination.y_mm = cf.y;
+    p.bodies.inclination.alpha_rad = cf.alpha;
+  }
   const Friction& f = record.friction;
   p.friction = to_model_friction(f.law, {f.fstat, f.fkin, f.params}, f.memdst, f.mem_s0);
   if (d.v == 3)

@@ -27,6 +27,10 @@ std::string g12(double v);
 /// ` JOHNSON"S METHOD …` (MAXOUT ≤ 1) or ` PANAGIOTOPOULOS" METHOD … MAXOUT=  n`.
 std::string frictional_stress_method(int maxout);
 
+/// ` USING CONFORMAL IF-CORRECTION: BLANCO(vN), CONSTANT CURVATURE` (C=4;
+/// wheelrail-advanced.md §1.7).
+std::string inclination_correction_method(const Materials::Conformal& c);
+
 /// The friction law's column header after `prefix`, and one set of its values (g12.4 fields).
 std::string friction_header(int law, const std::string& prefix);
 std::string friction_values(int law, double fstat, double fkin, const std::array<double, 4>& p);

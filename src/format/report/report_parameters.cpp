@@ -67,6 +67,8 @@ void write_problem_description(std::ostream& os, const CaseRecord& problem) {
            : d.f == 1 ? " X-FORCE,  Y-CREEPAGE PRESCRIBED"
                       : " TANGENTIAL FORCE PRESCRIBED");
   line(os, frictional_stress_method(problem.solver.maxout));
+  if (problem.materials.influence_type == 4)
+    line(os, inclination_correction_method(problem.materials.conformal));
 }
 
 // Hertz data of Hertzian potential contacts; labels pad to column 43 so values start at 44.
@@ -176,6 +178,11 @@ void write_material_block(std::ostream& os, const CaseRecord& problem, const Sol
 }
 
 }  // namespace
+
+std::string inclination_correction_method(const Materials::Conformal& c) {
+  return fmt::format(" USING CONFORMAL IF-CORRECTION: BLANCO(v{}), {} CURVATURE", c.variant,
+                     c.if_meth == 1 ? "VARYING" : "CONSTANT");
+}
 
 std::string frictional_stress_method(int maxout) {
   if (maxout <= 1) return " JOHNSON\"S METHOD IS USED FOR THE FRICTIONAL STRESS";

@@ -144,6 +144,8 @@ void write_wheelrail_problem_lines(std::ostream& os, const WheelRailRecord& r) {
                                                 : "";
   line(os, fmt::format("{}{}, CREEPAGE PRESCRIBED", rolling, approach));
   line(os, frictional_stress_method(r.solver.maxout));
+  if (r.materials.influence_type == 4)
+    line(os, inclination_correction_method(r.materials.conformal));
 }
 
 void write_wheelrail_input_blocks(std::ostream& os, const WheelRailRecord& r,

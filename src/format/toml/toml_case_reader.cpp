@@ -89,7 +89,8 @@ CaseRecord read_case(Table& c, const Context& ctx, Sequence& seq, const std::str
       }
     }
   }
-  if (p.solver.maxout > 1 && std::abs(material_k(p.materials)) < 1e-10) {
+  if (p.solver.maxout > 1 && std::abs(material_k(p.materials)) < 1e-10 &&
+      p.materials.influence_type != 4) {  // C=4 couples whatever K is (spec-additions §B8)
     warn(
         fmt::format("max_coupling_iterations = {} overridden to 1: the materials are "
                     "quasi-identical (K = 0)",

@@ -203,7 +203,22 @@ TEST(ToModel, UnsupportedFeaturesNameTheirDigit) {
   r = basic_record();
   r.digits.c = 1;  // keeps the coefficients of the previous case: what counts is the type kept
   r.materials.influence_type = 4;
-  EXPECT_EQ(message_of(r), "not supported yet: influence coefficients C=4");
+  r.materials.conformal = {0, 3, {-2.0, 2.0}, {-0.1, 0.1}};
+  EXPECT_EQ(message_of(r), "(accepted)");
+  const model::InclinationCorrection inclination = to_patch_problem(r).bodies.inclination;
+  EXPECT_EQ(inclination.variant, 3);
+  EXPECT_FALSE(inclination.varying_curvature);
+  EXPECT_EQ(inclination.y_mm, (std::vector<double>{-2.0, 2.0}));
+  EXPECT_EQ(inclination.alpha_rad, (std::vector<double>{-0.1, 0.1}));
+  r.materials.conformal.if_meth = 1;
+  EXPECT_EQ(message_of(r),
+            "not supported yet: the inclination correction C=4 with varying curvature (IF_METH=1); "
+            "IF_METH=0 fits the table with a constant curvature");
+  r.materials.conformal.if_meth = 0;
+  r.digits.m = 1;
+  r.digits.t = 3;
+  EXPECT_EQ(message_of(r),
+            "not supported yet: the inclination correction C=4 with viscoelastic bodies M=1");
   r = basic_record();
   r.digits.c = 9;
   r.digits.m = 1;

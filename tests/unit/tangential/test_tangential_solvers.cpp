@@ -41,7 +41,8 @@ struct CircularContact {
                                                                 FftBackendKind::Default);
     const std::size_t n = grid.size();
     sys.grid = grid;
-    sys.a = {&ops.xx, &ops.xy, &ops.xy, &ops.yy, ops.a.get(), preconditioner.get(), !ops.steady()};
+    sys.a = {&ops.xx,       &ops.xy,     &ops.xy, &ops.yy, ops.a.get(), preconditioner.get(),
+             !ops.steady(), ops.steady()};
     sys.contact.assign(n, 0);
     sys.bound.assign(n, 0.0);
     sys.bx.assign(n, 0.0);
