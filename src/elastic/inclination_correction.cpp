@@ -111,21 +111,27 @@ void turn_coefficients(int variant, double theta_rad, const double (&a)[3][3], d
   }
 }
 
-std::vector<Kernel> inclination_corrected_kernels(const std::vector<Component>& cs,
-                                                  const Grid& grid,
-                                                  const CombinedMaterial& material, double shift_x,
-                                                  double shift_y) {
+CombinedMaterial uncorrected(const CombinedMaterial& material) {
   CombinedMaterial plain = material;
   plain.inclination_variant = 0;
   plain.inclination_curvature_per_mm = 0.0;
-  // The plain A in full; its couplings are zero (not tabulated) for quasi-identical bodies, and
-  // C_yx = C_xy for the half-space.
-  const bool coupled = is_coupled(plain);
-  std::vector<Component> plain_cs{Component::xx, Component::xy, Component::yy, Component::nn};
-  if (coupled)
-    plain_cs.insert(plain_cs.end(), {Component::xn, Component::yn, Component::nx, Component::ny});
-  const std::vector<Kernel> k = make_kernels(plain_cs, grid, plain, shift_x, shift_y);
+  return plain;
+}
+
+std::vector<Component> plain_components(const CombinedMaterial& plain) {
+  std::vector<Component> cs{Component::xx, Component::xy, Component::yy, Component::nn};
+  // Quasi-identical bodies: zero couplings, not tabulated.
+  if (is_coupled(plain))
+    cs.insert(cs.end(), {Component::xn, Component::yn, Component::nx, Component::ny});
+  return cs;
+}
+
+std::vector<Kernel> turned_kernels(const std::vector<Component>& cs,
+                                   const std::vector<Kernel>& plain, const Grid& grid,
+                                   const CombinedMaterial& material, double shift_y) {
+  const bool coupled = plain.size() == 8;
   const Kernel zero(grid.mx, grid.my);
+  const std::vector<Kernel>& k = plain;
   const Kernel* comp[3][3] = {{&k[0], &k[1], coupled ? &k[4] : &zero},
                               {&k[1], &k[2], coupled ? &k[5] : &zero},
                               {coupled ? &k[6] : &zero, coupled ? &k[7] : &zero, &k[3]}};
@@ -146,6 +152,15 @@ std::vector<Kernel> inclination_corrected_kernels(const std::vector<Component>& 
     }
   }
   return out;
+}
+
+std::vector<Kernel> inclination_corrected_kernels(const std::vector<Component>& cs,
+                                                  const Grid& grid,
+                                                  const CombinedMaterial& material, double shift_x,
+                                                  double shift_y) {
+  const CombinedMaterial plain = uncorrected(material);
+  return turned_kernels(cs, make_kernels(plain_components(plain), grid, plain, shift_x, shift_y),
+                        grid, material, shift_y);
 }
 
 }  // namespace rollcontact::elastic

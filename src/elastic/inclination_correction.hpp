@@ -32,9 +32,22 @@ double inclination_curvature(const model::InclinationCorrection& correction);
 /// traction component j, components (x, s, n).
 void turn_coefficients(int variant, double theta_rad, const double (&a)[3][3], double (&b)[3][3]);
 
+/// The material without its correction: whose kernels are turned.
+CombinedMaterial uncorrected(const CombinedMaterial& material);
+
+/// The plain components the correction reads, in the order turned_kernels() takes them: xx, xy,
+/// yy, nn and, for a coupled plain material, xn, yn, nx, ny (C_yx = C_xy for the half-space).
+std::vector<Component> plain_components(const CombinedMaterial& plain);
+
 /// The kernels of components `cs` with the material's correction (CombinedMaterial::
-/// inclination_corrected()) applied to the plain half-space kernels of the same material,
-/// offset by offset (the observation point moved by the shift, physics.md §3.2).
+/// inclination_corrected()) applied to `plain` (plain_components(uncorrected(material)) on
+/// `grid` at the shift), offset by offset (the observation point moved by shift_y [mm],
+/// physics.md §3.2).
+std::vector<Kernel> turned_kernels(const std::vector<Component>& cs,
+                                   const std::vector<Kernel>& plain, const Grid& grid,
+                                   const CombinedMaterial& material, double shift_y);
+
+/// turned_kernels() of the plain kernels made here.
 std::vector<Kernel> inclination_corrected_kernels(const std::vector<Component>& cs,
                                                   const Grid& grid,
                                                   const CombinedMaterial& material, double shift_x,

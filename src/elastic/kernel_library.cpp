@@ -5,6 +5,8 @@
 #include <optional>
 #include <utility>
 
+#include "elastic/inclination_correction.hpp"
+
 namespace rollcontact::elastic {
 
 namespace {
@@ -120,6 +122,14 @@ std::optional<Kernel> KernelLibrary::cut_kept(Component c, const Grid& grid,
 std::vector<Kernel> KernelLibrary::kernels(const std::vector<Component>& cs, const Grid& grid,
                                            const CombinedMaterial& m, double shift_x,
                                            double shift_y) {
+  // Turned coefficients (C=4): the plain ones kept here, turned for this curvature (which a
+  // conformal patch's rows change from solve to solve) — a pass over the kernels instead of
+  // their closed forms.
+  if (m.inclination_corrected()) {
+    const CombinedMaterial plain = uncorrected(m);
+    return turned_kernels(cs, kernels(plain_components(plain), grid, plain, shift_x, shift_y), grid,
+                          m, shift_y);
+  }
   // The quadrature of a viscous part follows the grid's length (its kinks), so a kernel cut from
   // a larger grid's would differ in the last digits: viscoelastic kernels are made directly.
   // Kernels from a file's table (C=9) are copies of it, cheaper than the search.
