@@ -28,6 +28,9 @@ ratios FG 0..2 per body and relaxation times giving relaxation lengths TC·|VS| 
 (the same for both bodies or not), always rolling forwards (backwards, χ = π, is refused: M=1
 relaxes along +x only).
 
+With --inclination every case has Blanco's correction of the influence coefficients (C3 = 4,
+IF_METH 0, VARIANT 1..4, MAXOUT 1 or 5), on conformal patches (D=4) three times in four.
+
 With --sequences K it runs K random walks of --length cases each as one sequence (the lateral
 position wandering with jumps, yaw drifting, the load changing now and then, I = 0 or 1 at
 random) and every case of them again alone: steady rolling has no memory, so a case's answer
@@ -107,6 +110,17 @@ def viscoelastic(rng, p):
     return p
 
 
+def inclination(rng, p):
+    """Makes a drawn case use Blanco's correction (C3 = 4): a variant, the coupling passes, and
+    conformal patches (D=4) most of the time, where the rows' inclinations make it act."""
+    p.update(C3=4, variant=rng.choice([1, 2, 3, 4]), maxout=rng.choice([1, 5]))
+    if p["D"] != 5 and rng.random() < 0.75:
+        p["D"] = 4
+    if p["M"] == 1:  # C=4 with viscoelastic bodies is refused
+        p["M"] = 0
+    return p
+
+
 def wheel_flat_case(rng):
     """A case of CONTACT's wheel-flat example (`wheelflat.inp`'s first case, varied)."""
     head = (EXAMPLES / "wheelflat.inp").read_text().split("\n")[6:19]
@@ -127,9 +141,10 @@ def case_text(p):
     """The case as a CONTACT .inp (module 1, first case of its run)."""
     lines = [" 1 MODULE",
              f" {p['C']}2{p['B']}3{p['N']}{p['F']}0    C-P-B-T-N-F-S",
-             f" {p['V']}0{p['D']}2{p['M']}33    V-L-D-C-M-Z-E",
+             f" {p['V']}0{p['D']}{p.get('C3', 2)}{p['M']}33    V-L-D-C-M-Z-E",
              " 0000321    H-G-I-A-O-W-R",
-             "    999     100    30    1     1e-5         MAXGS, MAXIN, MAXNR, MAXOUT, EPS"]
+             f"    999     100    30    {p.get('maxout', 1)}     1e-5"
+             "         MAXGS, MAXIN, MAXNR, MAXOUT, EPS"]
     if p["V"] == 0:
         lines.append(f"  {p['mu']:.3f}   {p['mu']:.3f}                               FSTAT, FKIN")
     else:
@@ -140,6 +155,8 @@ def case_text(p):
                   else f"{-20.0 + 100.0 * k:.1f}")
             mu = p["mu"] * (0.5 + 0.5 * k / max(p["nvf"] - 1, 1))
             lines.append(f"  {at}   {mu:.3f}   {mu:.3f}            ALPHA|SVF, FSTAT, FKIN")
+    if p.get("C3") == 4:
+        lines.append(f"  0  {p['variant']}                                 IF_METH, VARIANT")
     lines.append("  0.280   0.280   82000.  82000.             POISS 1,2, GG 1,2")
     if p["M"] == 3:
         lines.append("  1.000   1.000   1.000                      K0_MF, ALFAMF, BETAMF")
@@ -310,6 +327,8 @@ def main():
                     help="cases of CONTACT's wheel-flat example (wheel slices) instead")
     ap.add_argument("--viscoelastic", action="store_true",
                     help="viscoelastic bodies (M=1) in every case")
+    ap.add_argument("--inclination", action="store_true",
+                    help="Blanco's correction of the coefficients (C3=4) in every case")
     ap.add_argument("--round-trip", action="store_true",
                     help="also convert each input .inp -> TOML -> .inp and require the same "
                          "results bit for bit (a difference is a problem)")
@@ -331,6 +350,8 @@ def main():
             p = draw(rng)
             if args.viscoelastic:
                 p = viscoelastic(rng, p)
+            if args.inclination:
+                p = inclination(rng, p)
             text = case_text(p)
         inp = args.out / f"case_{args.seed}_{k}.inp"
         inp.write_text(text)
