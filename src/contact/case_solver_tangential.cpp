@@ -56,11 +56,19 @@ tangential::TangentialResult CaseSolver::solve_simplified(double cksi, double ce
   c.nu = sol_.material.nu;
   c.mu = friction_->coefficient();
   simplified::FastsimVelocityFriction velocity;
+  Field mu_memory;
   if (friction_->velocity_dependent()) {
     velocity = {friction_.get(), problem_.friction.memory_distance_mm,
                 problem_.friction.memory_floor_speed_mm_s, sol_.kinematics.dt};
     c.velocity = &velocity;
-    if (kind == model::TangentialKind::TransientRolling) c.mu_prev = prev_.mu;
+    // The same particles' memory one step earlier (a shift moves none); −1 where a particle
+    // enters the contact.
+    if (prev_.present &&
+        (kind == model::TangentialKind::TransientRolling || kind == model::TangentialKind::Shift))
+      mu_memory = simplified::upstream_memory(
+          grid_, prev_.mu, prev_.pn, sol_.kinematics.chi,
+          kind == model::TangentialKind::Shift ? 0.0 : sol_.kinematics.dq);
+    c.mu_prev = mu_memory;
   }
   c.fn = total_normal_force();
   c.model = simplified::simplified_model(problem_);

@@ -106,37 +106,75 @@ SimplifiedFields fastsim(const FastsimInput& in) {
   const bool has_prev = in.ux_prev.size() == n && in.uy_prev.size() == n;
   for (std::size_t i = 0; i < n; ++i) {
     if (!(in.pn[i] > 0.0)) continue;
-    const double mu_prime =
-        in.mu_prev.size() == n && in.mu_prev[i] >= 0.0 ? in.mu_prev[i] : mu_static;
+    double mu_prime = mu_static;
+    if (in.velocity != nullptr)
+      mu_prime = in.mu_prev.size() == n && in.mu_prev[i] >= 0.0
+                     ? in.mu_prev[i]
+                     : in.velocity->law->coefficient_at(law_speed(in, i));
     solve_element(in, i, has_prev ? in.ux_prev[i] : 0.0, has_prev ? in.uy_prev[i] : 0.0, mu_prime,
                   out);
   }
   return out;
 }
 
-std::vector<double> upstream_field(const Grid& grid, std::span<const double> u, double chi,
-                                   double dq) {
-  std::vector<double> out(grid.size(), 0.0);
-  if (u.size() != grid.size()) return out;
+namespace {
+
+/// Calls visit(i, jx, jy, tx, ty) for every element i whose point δq upstream lies within the
+/// outer element centres: the point is element (jx, jy) plus (tx, ty) of an element towards
+/// (jx + 1, jy + 1) (index coordinates).
+template <class Visit>
+void for_each_upstream_point(const Grid& grid, double chi, double dq, Visit&& visit) {
   // Position in element-centre index coordinates of the point δq upstream.
   const double sx = dq * std::cos(chi) / grid.dx, sy = dq * std::sin(chi) / grid.dy;
-  auto value = [&](long ix, long iy) {
-    if (ix < 0 || iy < 0 || ix >= grid.mx || iy >= grid.my) return 0.0;
-    return u[grid.index(static_cast<int>(ix), static_cast<int>(iy))];
-  };
   for (int iy = 0; iy < grid.my; ++iy) {
     for (int ix = 0; ix < grid.mx; ++ix) {
       const double fx = ix + sx, fy = iy + sy;
       const double x0 = std::floor(fx), y0 = std::floor(fy);
-      const double tx = fx - x0, ty = fy - y0;
-      const long jx = static_cast<long>(x0), jy = static_cast<long>(y0);
-      // Points beyond the outer element centres lie outside the potential contact: 0 there.
+      // Points beyond the outer element centres lie outside the potential contact.
       if (fx < -1e-9 || fy < -1e-9 || fx > grid.mx - 1 + 1e-9 || fy > grid.my - 1 + 1e-9) continue;
-      out[grid.index(ix, iy)] =
-          (1.0 - tx) * (1.0 - ty) * value(jx, jy) + tx * (1.0 - ty) * value(jx + 1, jy) +
-          (1.0 - tx) * ty * value(jx, jy + 1) + tx * ty * value(jx + 1, jy + 1);
+      visit(grid.index(ix, iy), static_cast<long>(x0), static_cast<long>(y0), fx - x0, fy - y0);
     }
   }
+}
+
+}  // namespace
+
+std::vector<double> upstream_field(const Grid& grid, std::span<const double> u, double chi,
+                                   double dq) {
+  std::vector<double> out(grid.size(), 0.0);
+  if (u.size() != grid.size()) return out;
+  auto value = [&](long ix, long iy) {
+    if (ix < 0 || iy < 0 || ix >= grid.mx || iy >= grid.my) return 0.0;
+    return u[grid.index(static_cast<int>(ix), static_cast<int>(iy))];
+  };
+  for_each_upstream_point(
+      grid, chi, dq, [&](std::size_t i, long jx, long jy, double tx, double ty) {
+        out[i] = (1.0 - tx) * (1.0 - ty) * value(jx, jy) + tx * (1.0 - ty) * value(jx + 1, jy) +
+                 (1.0 - tx) * ty * value(jx, jy + 1) + tx * ty * value(jx + 1, jy + 1);
+      });
+  return out;
+}
+
+std::vector<double> upstream_memory(const Grid& grid, std::span<const double> mu,
+                                    std::span<const double> pn, double chi, double dq) {
+  std::vector<double> out(grid.size(), -1.0);
+  if (mu.size() != grid.size() || pn.size() != grid.size()) return out;
+  for_each_upstream_point(
+      grid, chi, dq, [&](std::size_t i, long jx, long jy, double tx, double ty) {
+        double sum = 0.0, weight = 0.0;
+        const auto add = [&](long kx, long ky, double w) {
+          if (kx < 0 || ky < 0 || kx >= grid.mx || ky >= grid.my || w <= 0.0) return;
+          const std::size_t k = grid.index(static_cast<int>(kx), static_cast<int>(ky));
+          if (!(pn[k] > 0.0)) return;  // not in contact: no memory of its own
+          sum += w * mu[k];
+          weight += w;
+        };
+        add(jx, jy, (1.0 - tx) * (1.0 - ty));
+        add(jx + 1, jy, tx * (1.0 - ty));
+        add(jx, jy + 1, (1.0 - tx) * ty);
+        add(jx + 1, jy + 1, tx * ty);
+        if (weight > 0.0) out[i] = sum / weight;
+      });
   return out;
 }
 

@@ -46,8 +46,12 @@ struct FastsimInput {
   double chi = 0.0;  ///< rolling direction [rad]; steady: cos χ > 0 sweeps from ix = MX−1 down
   /// Transient rolling: displacement of the same particles at the previous time [mm] (empty: 0).
   std::span<const double> ux_prev, uy_prev;
-  /// Velocity-dependent friction (nullptr: the bound μ·p_n); in transient rolling μ′ is
-  /// mu_prev (previous time, empty: μ_static), in steady rolling the upstream element's μ.
+  /// Velocity-dependent friction (nullptr: the bound μ·p_n); in transient rolling and shifts μ′
+  /// is mu_prev, the same particle's μ at the previous time (upstream_memory()), in steady
+  /// rolling the upstream element's μ. A particle without one (entering the contact, negative
+  /// mu_prev, or none at all) starts with μ_s at its own rigid slip velocity, as the first
+  /// element of a row does in steady rolling: a transient run of constant creepage then ends in
+  /// the steady state (docs/decisions.md).
   const FastsimVelocityFriction* velocity = nullptr;
   std::span<const double> mu_prev;
   /// With velocity-dependent friction: the rigid slip velocity V·|w| per element [mm/s] (the
@@ -65,5 +69,12 @@ SimplifiedFields fastsim(const FastsimInput& in);
 /// element-centre values, 0 where the point lies outside the grid. δq [mm].
 std::vector<double> upstream_field(const Grid& grid, std::span<const double> u, double chi,
                                    double dq);
+
+/// The friction memory μ′ of the same particles one step earlier for transient rolling: `mu`
+/// (previous case, same grid) at the upstream points as upstream_field() takes them,
+/// interpolated over the neighbours that were in contact (pn > 0) only; −1 where none was (the
+/// particle enters the contact). dq = 0: each element's own (a shift moves no particles).
+std::vector<double> upstream_memory(const Grid& grid, std::span<const double> mu,
+                                    std::span<const double> pn, double chi, double dq);
 
 }  // namespace rollcontact::simplified

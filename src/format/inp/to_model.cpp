@@ -193,13 +193,9 @@ void check_supported(const CaseRecord& record) {
     not_supported(fmt::format("friction law L={} with T={}", record.friction.law, d.t));
   // Fastsim takes falling friction at each element's rigid slip velocity as CONTACT does
   // (simplified/fastsim.hpp): steady rolling (T=3) gives CONTACT's tractcurv cases 91-120
-  // (docs/decisions.md). Transient Fastsim and FaStrip's strip correction with such a law are
-  // not compared with CONTACT yet.
-  if (record.friction.law != 0 && ((d.t == 1 || d.t == 2) && (d.m == 2 || d.m == 3)))
-    not_supported(fmt::format(
-        "friction law L={} with the simplified theory M={} in T={} (steady rolling T=3 only; not "
-        "yet validated)",
-        record.friction.law, d.m, d.t));
+  // (docs/decisions.md), transient rolling and shifts carry each particle's memory along and
+  // end in that steady state. FaStrip's strip correction with such a law is not compared with
+  // CONTACT yet.
   if (record.friction.law != 0 && d.t >= 1 && d.m == 5)
     not_supported(
         fmt::format("friction law L={} with FaStrip M=5 (not yet validated)", record.friction.law));

@@ -254,5 +254,51 @@ TEST(VelocityDependentFastsim, EveryElementTakesTheLawAtItsRigidSlipVelocity) {
   EXPECT_GT(checked, 100);
 }
 
+// Transient rolling (T=2) and shifts (T=1) with Fastsim and a falling law carry each particle's
+// friction memory along with it (its μ one step upstream) and start a particle entering the
+// contact with μ_s at its own rigid slip velocity, as steady rolling starts a row: rolling at
+// constant creepage with δq = δx for more steps than the patch is long ends exactly in the
+// steady state, element by element.
+TEST(VelocityDependentFastsim, TransientRollingEndsInTheSteadyState) {
+  model::Friction f = exponential(0.18, 0.12, 100.0);
+  f.memory_distance_mm = 0.003;
+  f.memory_floor_speed_mm_s = 1.0;
+  model::PatchProblem steady = fastsim_case(f, 0.002);
+  steady.tangential.creepage.spin_rad_per_mm = 2e-4;  // μ varies across the patch
+  PatchSolver a;
+  const Solution target = a.solve(steady);
+  ASSERT_TRUE(target.solver.converged);
+  model::PatchProblem step = steady;
+  step.tangential.kind = model::TangentialKind::TransientRolling;
+  PatchSolver b;
+  Solution s;
+  for (int k = 0; k < target.grid.mx + 2; ++k) {
+    step.sequence.continue_previous = k > 0;
+    s = b.solve(step);
+    ASSERT_TRUE(s.solver.converged) << k;
+  }
+  ASSERT_EQ(s.mu.size(), target.mu.size());
+  double largest = 0.0, worst = 0.0, worst_mu = 0.0;
+  for (std::size_t i = 0; i < s.px.size(); ++i) {
+    largest = std::max(largest, std::hypot(target.px[i], target.py[i]));
+    worst = std::max(worst, std::hypot(s.px[i] - target.px[i], s.py[i] - target.py[i]));
+    if (target.pn[i] > 0.0) worst_mu = std::max(worst_mu, std::abs(s.mu[i] - target.mu[i]));
+  }
+  EXPECT_LT(worst, 1e-12 * largest);
+  EXPECT_LT(worst_mu, 1e-14);
+  EXPECT_NEAR(s.totals.fx, target.totals.fx, 1e-12 * std::abs(target.totals.fx));
+  // A shift keeps each particle's memory where it is: shifting on with the same increment
+  // from a state reached by shifting, the elements keep their μ unless they slid.
+  model::PatchProblem shift = steady;
+  shift.tangential.kind = model::TangentialKind::Shift;
+  shift.tangential.creepage = {1e-4, 0.0, 0.0};
+  PatchSolver c;
+  const Solution first = c.solve(shift);
+  shift.sequence.continue_previous = true;
+  const Solution second = c.solve(shift);
+  ASSERT_TRUE(first.solver.converged && second.solver.converged);
+  EXPECT_GT(std::abs(second.totals.fx), std::abs(first.totals.fx));
+}
+
 }  // namespace
 }  // namespace rollcontact
