@@ -100,9 +100,7 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     a.un = r.un;
     a.force_given = force_given;
     a.load = load_value;
-    a.g = sol_.material.g;
-    a.nu = sol_.material.nu;
-    a.k = sol_.material.k;
+    a.set_material(sol_.material);
     a.pen = r.pen;
     a.eps = normal_settings().eps;
   }
