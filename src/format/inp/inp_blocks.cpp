@@ -110,6 +110,13 @@ FrictionValues read_friction_values(InpStream& in, int law, std::string_view wha
   fv.params = {g.real(1), g.real(2), g.real(3), g.real(4)};
   fv.fstat = fv.fkin + fv.params[0] + fv.params[2];
   require_at_least(in, g.line(0), "FKIN", fv.fkin, 0.0);
+  // A negative coefficient makes mu fall below FKIN and rise again; a negative SABSH makes the
+  // term grow without bound with the slip velocity. 0 switches a term off (SABSH = 0 is read as
+  // a tiny reference speed).
+  require_at_least(in, g.line(1), f1, g.real(1), 0.0);
+  require_at_least(in, g.line(2), "SABSH1", g.real(2), 0.0);
+  require_at_least(in, g.line(3), f2, g.real(3), 0.0);
+  require_at_least(in, g.line(4), "SABSH2", g.real(4), 0.0);
   return fv;
 }
 

@@ -128,6 +128,11 @@ void read_geometry(InpStream& in, const PotentialContact& pc, UndeformedDistance
                       "the IBASE=2 line (NN XM RM Y1 DY1)");
     require_int_range(in, h.line(0), "NN", h.integer(0), 2, 1000000);
     require_positive(in, h.line(4), "DY1", h.real(4));
+    if (h.real(2) == 0.0) {
+      in.fail(h.line(2),
+              "RM = 0: the x-radius of the IBASE=2 profile must be non-zero (a large "
+              "RM gives a flat x-profile)");
+    }
     ud.xm = h.real(1);
     ud.rm = h.real(2);
     ud.y1 = h.real(3);
@@ -136,6 +141,13 @@ void read_geometry(InpStream& in, const PotentialContact& pc, UndeformedDistance
         in.read_reals(static_cast<std::size_t>(h.integer(0)), "B(1..NN) of the IBASE=2 block");
   } else if (ibase == 3) {
     ud.coeffs = in.read_reals(8, "B(1..8) of the IBASE=3 block");
+    for (std::size_t k = 6; k < 8; ++k) {
+      if (ud.coeffs[k] == 0.0) {
+        in.fail(in.last_line(), fmt::format("B{} = 0: IBASE=3 divides by B7 and B8 (x²/B7 + "
+                                            "y²/B8; a large value gives a flat direction)",
+                                            k + 1));
+      }
+    }
   } else {
     ud.values = in.read_reals(element_count(pc), "H(1..MX·MY) of the IBASE=9 block");
   }

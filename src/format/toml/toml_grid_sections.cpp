@@ -173,6 +173,10 @@ void read_geometry(Table& c, CaseRecord& p) {
   } else if (kind == "sines") {
     ud.ibase = 3;
     ud.coeffs = t.reals("sines", 8);
+    if (ud.coeffs[6] == 0.0 || ud.coeffs[7] == 0.0)
+      t.fail_key("sines",
+                 "B7 and B8 must be non-zero (x²/B7 + y²/B8; a large value gives a flat "
+                 "direction)");
   } else if (kind == "per_element_mm") {
     ud.ibase = 9;
     ud.values = t.reals("per_element_mm", element_count(pc));
@@ -186,6 +190,8 @@ void read_geometry(Table& c, CaseRecord& p) {
     require_positive(pr, "y_step_mm", ud.dy1);
     ud.xm = pr.real_or("x_centre_mm", 0.0);
     ud.rm = pr.real("x_radius_mm");
+    if (ud.rm == 0.0)
+      pr.fail_key("x_radius_mm", "0: must be non-zero (a large radius gives a flat x-profile)");
     pr.finish();
   }
   ud.iplan = 1;

@@ -196,6 +196,13 @@ FrictionValues read_friction_values(Table& t, int law) {
   if (!(fv.fkin >= 0.0)) t.fail_key("kinetic", fmt::format("{} must be at least 0", fv.fkin));
   const auto excess = t.reals("excess", 2);
   const auto speed = t.reals("decay_speed_mm_per_s", 2);
+  // A negative excess would make mu fall below FKIN and rise again; a negative decay speed
+  // makes the term grow without bound with the slip velocity. 0 is a term switched off.
+  for (std::size_t k = 0; k < 2; ++k) {
+    if (!(excess[k] >= 0.0)) t.fail_key("excess", fmt::format("{} must be at least 0", excess[k]));
+    if (!(speed[k] >= 0.0))
+      t.fail_key("decay_speed_mm_per_s", fmt::format("{} must be at least 0", speed[k]));
+  }
   fv.params = {excess[0], speed[0], excess[1], speed[1]};
   fv.fstat = fv.fkin + fv.params[0] + fv.params[2];
   return fv;

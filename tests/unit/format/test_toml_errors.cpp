@@ -105,6 +105,37 @@ TEST(TomlCaseErrors, LayerAndSimplifiedTheoryValuesAreCheckedAtTheirKeys) {
   EXPECT_NE(m.find("slope_reduction.k0: 0 must be positive"), std::string::npos) << m;
 }
 
+TEST(TomlCaseErrors, DivisorsAndFallingFrictionTermsAreCheckedAtTheirKeys) {
+  const std::string grid =
+      "rectangle = { elements = [10, 10], lower_left_mm = [-1.0, -1.0], "
+      "upper_right_mm = [1.0, 1.0] }\n";
+  std::string base = minimal_case();
+  base.replace(base.find("hertz = {"), std::string::npos, grid);
+  const auto geometry = [&](const std::string& g) { return base + "[case.geometry]\n" + g; };
+  ASSERT_EQ(error_of(geometry("sines = [0, 1, 0, 0, 1, 0, 460, 460]\n")), "");
+  std::string m = error_of(geometry("sines = [0, 1, 0, 0, 1, 0, 460, 0]\n"));
+  EXPECT_NE(m.find("case[1].geometry.sines: B7 and B8 must be non-zero"), std::string::npos) << m;
+  const std::string profile =
+      "[case.geometry.profile]\ny_first_mm = -1.0\ny_step_mm = 1.0\nheights_mm = [0.0, 0.0]\n";
+  ASSERT_EQ(error_of(geometry(profile + "x_radius_mm = 250.0\n")), "");
+  m = error_of(geometry(profile + "x_radius_mm = 0.0\n"));
+  EXPECT_NE(m.find("case[1].geometry.profile.x_radius_mm: 0: must be non-zero"), std::string::npos)
+      << m;
+
+  const auto friction = [&](const std::string& excess, const std::string& speed) {
+    return minimal_case() +
+           "[case.friction]\nlaw = \"linear_falling\"\nkinetic = 0.2\nexcess = " + excess +
+           "\ndecay_speed_mm_per_s = " + speed + "\n";
+  };
+  ASSERT_EQ(error_of(friction("[0.1, 0.0]", "[100.0, 0.0]")), "");
+  m = error_of(friction("[0.1, -0.05]", "[100.0, 1000.0]"));
+  EXPECT_NE(m.find("case[1].friction.excess: -0.05 must be at least 0"), std::string::npos) << m;
+  m = error_of(friction("[0.1, 0.05]", "[-100.0, 1000.0]"));
+  EXPECT_NE(m.find("case[1].friction.decay_speed_mm_per_s: -100 must be at least 0"),
+            std::string::npos)
+      << m;
+}
+
 TEST(TomlCaseErrors, BadChoiceListsTheNames) {
   const std::string m = error_of(minimal_case("method = \"exactly\"\n"));
   EXPECT_NE(m.find("bad.toml:4: case[1].normal.method: \"exactly\" is not one of \"exact\""),
