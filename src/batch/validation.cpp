@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <nlohmann/json.hpp>
 
@@ -26,7 +28,22 @@ WorstDifference ExampleResult::worst() const {
       // Counts have an absolute tolerance; a zero reference has no relative difference.
       if (q.count || q.reference == 0) continue;
       const double r = q.relative_difference();
-      if (r > w.relative) w = {r, c.number, q.name};
+      if (r > w.value) w = {r, c.number, q.name};
+    }
+  return w;
+}
+
+WorstDifference ExampleResult::closest_to_tolerance() const {
+  WorstDifference w;
+  for (const auto& c : cases)
+    for (const auto& q : c.quantities) {
+      const double d = q.difference();
+      // A missing value (NaN) uses all of any tolerance; allowed 0 admits equality only.
+      const double share = std::isnan(d)   ? std::numeric_limits<double>::infinity()
+                           : q.allowed > 0 ? d / q.allowed
+                           : d == 0        ? 0.0
+                                           : std::numeric_limits<double>::infinity();
+      if (share > w.value) w = {share, c.number, q.name};
     }
   return w;
 }

@@ -21,10 +21,10 @@ struct ExampleFiles {
   std::filesystem::path input, reference;
 };
 
-/// The largest relative difference of one example (non-count quantities with a nonzero
-/// reference, over all compared cases).
+/// The largest of one measure of difference over the compared quantities of one example, with
+/// the case and quantity where it occurs.
 struct WorstDifference {
-  double relative = -1;  ///< < 0: nothing compared
+  double value = -1;  ///< < 0: nothing compared
   int case_number = 0;
   std::string quantity;
 };
@@ -38,7 +38,12 @@ struct ExampleResult {
   double seconds = 0;
 
   int count(CaseStatus status) const;
+  /// The largest relative difference |ours − ref| / |ref| (non-count quantities with a nonzero
+  /// reference): how far from CONTACT in its own terms.
   WorstDifference worst() const;
+  /// The largest share of its tolerance a difference uses, |ours − ref| / allowed (every
+  /// quantity, counts too): how close the example is to failing; above 1 is a failure.
+  WorstDifference closest_to_tolerance() const;
 };
 
 /// What running one example produced; validate_example() reads the outputs.

@@ -11,39 +11,60 @@ namespace rollcontact::batch {
 
 namespace {
 
-std::string format_worst(const WorstDifference& w) {
-  if (w.relative < 0) return "-";
-  if (w.relative == 0) return "0";
-  if (std::isinf(w.relative)) return fmt::format("inf (c{} {})", w.case_number, w.quantity);
-  return fmt::format("{:.1e} (c{} {})", w.relative, w.case_number, w.quantity);
+std::string format_worst(const WorstDifference& w, const char* number_format) {
+  if (w.value < 0) return "-";
+  if (w.value == 0) return "0";
+  if (std::isinf(w.value)) return fmt::format("inf (c{} {})", w.case_number, w.quantity);
+  return fmt::format(fmt::runtime(number_format), w.value) +
+         fmt::format(" (c{} {})", w.case_number, w.quantity);
+}
+
+std::string format_relative(const WorstDifference& w) {
+  return format_worst(w, "{:.1e}");
+}
+std::string format_share(const WorstDifference& w) {
+  return format_worst(w, "{:.2f}");
 }
 
 struct Row {
   std::string example;
   int cases = 0, passed = 0, failed = 0, not_supported = 0;
-  std::string worst;
+  std::string worst;     ///< the largest relative difference
+  std::string tightest;  ///< the largest share of a tolerance
 };
+
+/// `value (cN quantity) (example)` for the total row; the example only where something differs.
+std::string with_example(const std::string& formatted, const WorstDifference& w,
+                         const std::string& example) {
+  return w.value > 0 ? fmt::format("{} ({})", formatted, example) : formatted;
+}
 
 std::vector<Row> table_rows(const std::vector<ExampleResult>& results) {
   std::vector<Row> rows;
-  Row total{"total", 0, 0, 0, 0, "-"};
-  WorstDifference worst_total;
+  Row total{"total", 0, 0, 0, 0, "-", "-"};
+  WorstDifference worst_total, tightest_total;
   for (const auto& r : results) {
+    const WorstDifference worst = r.worst();
+    const WorstDifference tightest = r.closest_to_tolerance();
     Row row{r.name,
             static_cast<int>(r.cases.size()),
             r.count(CaseStatus::Passed),
             r.count(CaseStatus::Failed),
             r.count(CaseStatus::NotSupported),
-            format_worst(r.worst())};
+            format_relative(worst),
+            format_share(tightest)};
     if (r.cases.empty() && !r.run_error.empty()) row.worst = "error: " + r.run_error;
     total.cases += row.cases;
     total.passed += row.passed;
     total.failed += row.failed;
     total.not_supported += row.not_supported;
-    if (const auto w = r.worst(); w.relative > worst_total.relative) {
-      worst_total = w;
-      total.worst =
-          w.relative > 0 ? fmt::format("{} ({})", format_worst(w), r.name) : format_worst(w);
+    if (worst.value > worst_total.value) {
+      worst_total = worst;
+      total.worst = with_example(format_relative(worst), worst, r.name);
+    }
+    if (tightest.value > tightest_total.value) {
+      tightest_total = tightest;
+      total.tightest = with_example(format_share(tightest), tightest, r.name);
     }
     rows.push_back(std::move(row));
   }
@@ -89,27 +110,35 @@ std::string format_validation_table(const std::vector<ExampleResult>& results, T
   const auto rows = table_rows(results);
   std::string out;
   if (style == TableStyle::Markdown) {
-    out += "| Example | Cases | Passed | Failed | Not supported | Worst relative difference |\n";
-    out += "|---|---:|---:|---:|---:|---|\n";
+    out +=
+        "| Example | Cases | Passed | Failed | Not supported | Worst relative difference | "
+        "Most of a tolerance used |\n";
+    out += "|---|---:|---:|---:|---:|---|---|\n";
     for (const auto& r : rows) {
       const bool total = &r == &rows.back();
       const std::string name = total ? "**total**" : "`" + r.example + "`";
-      out += fmt::format("| {} | {} | {} | {} | {} | {} |\n", name, r.cases, r.passed, r.failed,
-                         r.not_supported, r.worst);
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", name, r.cases, r.passed,
+                         r.failed, r.not_supported, r.worst, r.tightest);
     }
     return out;
   }
-  std::size_t width = 7;
-  for (const auto& r : rows) width = std::max(width, r.example.size());
-  const auto line = [&](const std::string& a, const std::string& b, const std::string& c,
-                        const std::string& d, const std::string& e, const std::string& f) {
-    out += fmt::format("{:<{}}  {:>5}  {:>6}  {:>6}  {:>13}  {}\n", a, width, b, c, d, e, f);
-  };
-  line("example", "cases", "passed", "failed", "not supported", "worst relative difference");
+  std::size_t width = 7, worst_width = 25;
   for (const auto& r : rows) {
-    if (&r == &rows.back()) out += std::string(width + 40, '-') + "\n";
+    width = std::max(width, r.example.size());
+    worst_width = std::max(worst_width, r.worst.size());
+  }
+  const auto line = [&](const std::string& a, const std::string& b, const std::string& c,
+                        const std::string& d, const std::string& e, const std::string& f,
+                        const std::string& g) {
+    out += fmt::format("{:<{}}  {:>5}  {:>6}  {:>6}  {:>13}  {:<{}}  {}\n", a, width, b, c, d, e, f,
+                       worst_width, g);
+  };
+  line("example", "cases", "passed", "failed", "not supported", "worst relative difference",
+       "most of a tolerance used");
+  for (const auto& r : rows) {
+    if (&r == &rows.back()) out += std::string(width + worst_width + 66, '-') + "\n";
     line(r.example, std::to_string(r.cases), std::to_string(r.passed), std::to_string(r.failed),
-         std::to_string(r.not_supported), r.worst);
+         std::to_string(r.not_supported), r.worst, r.tightest);
   }
   return out;
 }
@@ -167,7 +196,8 @@ std::string format_validation_markdown(const std::vector<ExampleResult>& results
       "Produced by `rollcontact validate {}`: every `.inp` with a `.ref_out` is solved and each "
       "case's report is compared with CONTACT's reference (tolerances: "
       "`src/batch/validation_tolerances.cpp`). The worst relative difference is over all compared "
-      "quantities except element counts.\n\n",
+      "quantities except element counts; the most of a tolerance used is the largest "
+      "|ours − reference| / allowed over all of them (above 1 fails).\n\n",
       folder);
   out += format_validation_table(results, TableStyle::Markdown);
   out += format_case_reasons(results, TableStyle::Markdown);

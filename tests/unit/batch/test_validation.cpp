@@ -194,10 +194,16 @@ TEST(ValidationSummary, TableAndReasons) {
   const auto w = results[0].worst();
   EXPECT_EQ(w.case_number, 1);
   EXPECT_EQ(w.quantity, "PMAX");  // counts are not in the relative statistics
-  EXPECT_NEAR(w.relative, 0.007 / 4.393, 1e-12);
+  EXPECT_NEAR(w.value, 0.007 / 4.393, 1e-12);
+  // The closest to its tolerance: PMAX uses 0.007 / 0.02 of its, NCON 1 / 2 of its.
+  const auto t = results[0].closest_to_tolerance();
+  EXPECT_EQ(t.quantity, "NCON");
+  EXPECT_NEAR(t.value, 0.5, 1e-12);
 
   const std::string md = format_validation_table(results, TableStyle::Markdown);
-  EXPECT_NE(md.find("| `demo` | 6 | 1 | 1 | 4 | 1.6e-03 (c1 PMAX) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| `demo` | 6 | 1 | 1 | 4 | 1.6e-03 (c1 PMAX) | 0.50 (c1 NCON) |"),
+            std::string::npos)
+      << md;
   EXPECT_NE(md.find("| **total** | 6 | 1 | 1 | 4 |"), std::string::npos) << md;
   const std::string reasons = format_case_reasons(results, TableStyle::Text);
   EXPECT_NE(reasons.find("demo c2-c4, c6: not supported yet: T=1"), std::string::npos) << reasons;
