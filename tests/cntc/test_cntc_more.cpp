@@ -408,7 +408,7 @@ TEST(CntcWheelRail, RollerRigThroughTheLibrary) {
   cntc_finalize(&ire);
 }
 
-TEST(CntcWheelRail, ConformalContactByTheDiscretisationFlag) {
+TEST(CntcWheelRail, ConformalContactAndInclinationCorrectionByTheirFlags) {
   // examples/conformal_flange_root.inp case 1 (planar, D=2) read through the library; with
   // CNTC_ic_discns = 4 the same wheel is solved conformally, as the file's case 2 (rollcontact
   // run: F(TR) = (−850.02, 572.84, 10000) planar, (−851.84, 561.20, 9999.9) N conformal).
@@ -431,6 +431,24 @@ TEST(CntcWheelRail, ConformalContactByTheDiscretisationFlag) {
   EXPECT_NEAR(conformal[1], 561.20, 0.01);
   EXPECT_NEAR(conformal[0], -851.84, 0.01);
   EXPECT_NEAR(conformal[2], 1e4, 2.0);
+
+  // Blanco's inclination correction on the same conformal patch: C3 = 4, IF_METH 0, variant 4,
+  // with MAXOUT 5 for the coupling it brings (rollcontact run on the file with a third case
+  // 0144002 / 0000331 / MAXOUT 5 / "0 4": F(TR) = (−852.93, 565.99, 10000) N; the correction
+  // moves FY by 4.8 N, 500 times the tolerance here).
+  int gdigit = 0, nints = 4, iparam[4] = {999, 100, 30, 5}, nreals = 1;
+  double rparam[1] = {1e-5};
+  cntc_setsolverflags(&ire, &icp, &gdigit, &nints, iparam, &nreals, rparam);
+  int ncorr = 3, corr_flags[3] = {CNTC_ic_inflcf, CNTC_ic_ifmeth, CNTC_ic_ifvari},
+      corr_values[3] = {4, 0, 4};
+  cntc_setflags(&ire, &icp, &ncorr, corr_flags, corr_values);
+  cntc_calculate(&ire, &icp, &ierror);
+  ASSERT_EQ(ierror, 0);
+  std::array<double, 24> corrected{};
+  cntc_getglobalforces(&ire, &icp, &n24, corrected.data());
+  EXPECT_NEAR(corrected[0], -852.93, 0.01);
+  EXPECT_NEAR(corrected[1], 565.99, 0.01);
+  EXPECT_NEAR(corrected[2], 1e4, 2.0);
   cntc_finalize(&ire);
 }
 
