@@ -100,7 +100,7 @@ void CaseSolver::solve_normal(const Field& px, const Field& py) {
     a.un = r.un;
     a.force_given = force_given;
     a.load = load_value;
-    a.set_material(sol_.material);
+    a.material = sol_.material;
     a.pen = r.pen;
     a.eps = normal_settings().eps;
   }

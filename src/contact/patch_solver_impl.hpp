@@ -34,31 +34,19 @@ struct PatchSolver::Impl {
     std::vector<double> h, pn, un;  ///< un = A·pn
     bool force_given = false;
     double load = 0.0;
-    /// What of the material the normal operator depends on (viscoelastic bodies and tables are
-    /// never kept).
-    double g = 0.0, nu = 0.0, k = 0.0, normal_layer = 0.0;
-    model::TractionElements elements = model::TractionElements::piecewise_constant;
-    int inclination_variant = 0;
-    double inclination_curvature = 0.0;
+    CombinedMaterial material;  ///< it was solved with (viscoelastic bodies and tables: never kept)
     double pen = 0.0;
     double eps = 0.0;  ///< the tolerance it was solved to
-    void set_material(const CombinedMaterial& m) {
-      g = m.g;
-      nu = m.nu;
-      k = m.k;
-      normal_layer = m.normal_layer_compliance;
-      elements = m.elements;
-      inclination_variant = m.inclination_variant;
-      inclination_curvature = m.inclination_curvature_per_mm;
-    }
     /// Solved with the normal operator of this grid size and element and this material (so its
-    /// un is A·pn there; a patch's turned coefficients, C=4, change with its rows).
+    /// un is A·pn there; a patch's turned coefficients, C=4, change with its rows): what of the
+    /// material the normal operator depends on.
     bool same_operator(const Grid& other, const CombinedMaterial& m) const {
       return grid.mx == other.mx && grid.my == other.my && grid.dx == other.dx &&
-             grid.dy == other.dy && g == m.g && nu == m.nu && k == m.k &&
-             normal_layer == m.normal_layer_compliance && elements == m.elements &&
-             inclination_variant == m.inclination_variant &&
-             inclination_curvature == m.inclination_curvature_per_mm;
+             grid.dy == other.dy && material.g == m.g && material.nu == m.nu && material.k == m.k &&
+             material.normal_layer_compliance == m.normal_layer_compliance &&
+             material.elements == m.elements &&
+             material.inclination_variant == m.inclination_variant &&
+             material.inclination_curvature_per_mm == m.inclination_curvature_per_mm;
     }
   };
   std::optional<NormalAnswer> last_normal;

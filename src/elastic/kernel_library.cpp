@@ -60,7 +60,9 @@ Kernel KernelLibrary::kernel(Component c, const Grid& grid, const CombinedMateri
 
 const Kernel* KernelLibrary::find_covering(Component c, const Grid& grid,
                                            const CombinedMaterial& m) {
-  if (m.viscoelastic() || m.table) return nullptr;  // never kept (kernels())
+  // Never kept (kernels()): viscoelastic kernels, a table's, and turned ones (C=4), which are
+  // made from the kept plain kernels.
+  if (m.viscoelastic() || m.table || m.inclination_corrected()) return nullptr;
   for (auto it = entries_.begin(); it != entries_.end(); ++it)
     if (matches(*it, c, grid, m, 0.0, 0.0) && it->kernel.mx() >= grid.mx &&
         it->kernel.my() >= grid.my) {
@@ -81,9 +83,7 @@ bool KernelLibrary::matches(const Entry& e, Component c, const Grid& grid,
   return e.c == c && e.dx == grid.dx && e.dy == grid.dy && e.g == m.g && e.nu == m.nu &&
          e.k == m.k && e.layer == m.layer_compliance &&
          e.normal_layer == m.normal_layer_compliance && e.shift_x == shift_x &&
-         e.shift_y == shift_y && e.viscous == m.viscous && e.elements == m.elements &&
-         e.inclination_variant == m.inclination_variant &&
-         e.inclination_curvature == m.inclination_curvature_per_mm;
+         e.shift_y == shift_y && e.viscous == m.viscous && e.elements == m.elements;
 }
 
 std::optional<Kernel> KernelLibrary::cut_kept(Component c, const Grid& grid,
@@ -190,7 +190,6 @@ std::vector<Kernel> KernelLibrary::kernels(const std::vector<Component>& cs, con
       out[q] = cut_kernel(made[k], grid.mx, grid.my);
       entries_.push_front({cs[q], grid.dx, grid.dy, m.g, m.nu, m.k, m.layer_compliance,
                            m.normal_layer_compliance, shift_x, shift_y, m.viscous, m.elements,
-                           m.inclination_variant, m.inclination_curvature_per_mm,
                            std::move(made[k])});
       kept_bytes_ += bytes_of(entries_.front().kernel);
     }

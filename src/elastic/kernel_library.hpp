@@ -44,13 +44,13 @@ class KernelLibrary {
   std::size_t computed() const noexcept { return computed_; }  ///< closed-form tabulations
 
  private:
+  /// A kept kernel: always a plain one (the inclination correction, C=4, turns kept plain
+  /// kernels in kernels(), and a variant without curvature has the plain coefficients).
   struct Entry {
     Component c;
     double dx, dy, g, nu, k, layer, normal_layer, shift_x, shift_y;
     std::array<ViscousCompliance, 2> viscous;
     model::TractionElements elements;
-    int inclination_variant;
-    double inclination_curvature;
     Kernel kernel;
   };
   static bool matches(const Entry& e, Component c, const Grid& grid, const CombinedMaterial& m,

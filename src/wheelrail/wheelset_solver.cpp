@@ -110,9 +110,7 @@ WheelRailSolution WheelsetSolver::Impl::solve_at(const model::WheelRailProblem& 
   // The wheel's combined constants (the report's MATERIAL CONSTANTS); the inclination
   // correction (C=4) belongs to each patch, whose rows give its table (setup_patch).
   model::Bodies bodies = p.patch.bodies;
-  bodies.inclination.y_mm.clear();
-  bodies.inclination.alpha_rad.clear();
-  bodies.inclination.variant = 0;
+  bodies.inclination = {};
   out.material = elastic::combine_bodies(bodies, std::abs(model::rolling_speed_mm_s(p)));
   if (!normal_only) {
     last_solve_turned = false;
