@@ -9,6 +9,7 @@
 
 #include "rollcontact/solve.hpp"
 #include "support/hertz_problem.hpp"
+#include "support/patch_solve.hpp"
 
 namespace rollcontact {
 namespace {
@@ -33,19 +34,12 @@ model::PatchProblem turned_problem(int variant, double curvature, model::Tangent
   return p;
 }
 
-Solution solve(const model::PatchProblem& p) {
-  PatchSolver solver;
-  Solution s = solver.solve(p);
-  EXPECT_TRUE(s.solver.converged) << s.solver.message;
-  return s;
-}
-
 // α = c₁·y is its own mirror image (y → −y turns α into −α at −y), and so is a longitudinal
 // creepage: the lateral force and the spin moment vanish, whatever the variant.
 TEST(InclinationCorrectionSolve, MirrorSymmetricRollingHasNoLateralForceOrSpinMoment) {
   for (int variant = 1; variant <= 4; ++variant) {
-    const Solution s =
-        solve(turned_problem(variant, 0.05, model::TangentialKind::SteadyRolling, 1e-3, 0.0, 0.0));
+    const Solution s = test::solve_converged(
+        turned_problem(variant, 0.05, model::TangentialKind::SteadyRolling, 1e-3, 0.0, 0.0));
     const double fx = std::abs(s.totals.fx);
     EXPECT_GT(fx, 0.3 * 0.3 * 10000.0) << variant;
     EXPECT_LT(std::abs(s.totals.fy), 1e-6 * fx) << variant;
@@ -60,11 +54,11 @@ TEST(InclinationCorrectionSolve, MirrorSymmetricRollingHasNoLateralForceOrSpinMo
 TEST(InclinationCorrectionSolve, ConstantInclinationIsThePlainHalfSpace) {
   model::PatchProblem p =
       turned_problem(0, 0.0, model::TangentialKind::SteadyRolling, 1e-3, -5e-4, 1e-4);
-  const Solution plain = solve(p);
+  const Solution plain = test::solve_converged(p);
   p.bodies.inclination.variant = 3;
   p.bodies.inclination.y_mm = {-4.0, 0.0, 4.0};
   p.bodies.inclination.alpha_rad = {0.2, 0.2, 0.2};
-  const Solution same = solve(p);
+  const Solution same = test::solve_converged(p);
   EXPECT_EQ(same.totals.fn, plain.totals.fn);
   EXPECT_EQ(same.totals.fx, plain.totals.fx);
   EXPECT_EQ(same.totals.fy, plain.totals.fy);
@@ -76,7 +70,7 @@ TEST(InclinationCorrectionSolve, ConstantInclinationIsThePlainHalfSpace) {
 // (first order, the coupling terms sin θ ≈ θ), and it vanishes with the curvature.
 TEST(InclinationCorrectionSolve, ChangeOfTheForcesIsFirstOrderInTheCurvature) {
   const auto forces = [](double curvature) {
-    const Solution s = solve(
+    const Solution s = test::solve_converged(
         turned_problem(1, curvature, model::TangentialKind::SteadyRolling, 1e-3, -5e-4, 1e-4));
     return std::array<double, 2>{s.totals.fx, s.totals.fy};
   };
@@ -95,9 +89,11 @@ TEST(InclinationCorrectionSolve, EveryVariantSolvesShiftsAndRolling) {
   for (model::TangentialKind kind :
        {model::TangentialKind::Shift, model::TangentialKind::SteadyRolling}) {
     const double creep = kind == model::TangentialKind::Shift ? 2e-4 : 1e-3;
-    const double plain = solve(turned_problem(0, 0.0, kind, creep, 0.5 * creep, 0.0)).totals.fx;
+    const double plain =
+        test::solve_converged(turned_problem(0, 0.0, kind, creep, 0.5 * creep, 0.0)).totals.fx;
     for (int variant = 1; variant <= 4; ++variant) {
-      const Solution s = solve(turned_problem(variant, -0.04, kind, creep, 0.5 * creep, 0.0));
+      const Solution s =
+          test::solve_converged(turned_problem(variant, -0.04, kind, creep, 0.5 * creep, 0.0));
       EXPECT_NEAR(s.totals.fn, 10000.0, 1e-6 * 10000.0) << variant;
       EXPECT_NE(s.totals.fx, plain) << variant;
       EXPECT_NEAR(s.totals.fx, plain, 0.05 * std::abs(plain)) << variant;

@@ -9,6 +9,7 @@
 
 #include "rollcontact/solve.hpp"
 #include "support/hertz_problem.hpp"
+#include "support/patch_solve.hpp"
 
 namespace rollcontact {
 namespace {
@@ -50,16 +51,9 @@ model::PatchProblem two_bumps(double factor, bool lower_only = false) {
   return p;
 }
 
-Solution solve(const model::PatchProblem& p) {
-  PatchSolver solver;
-  Solution s = solver.solve(p);
-  EXPECT_TRUE(s.solver.converged) << s.solver.message;
-  return s;
-}
-
 TEST(PlanformInteraction, NoInteractionSplitsIntoIndependentProblems) {
-  const Solution one = solve(two_bumps(-1.0, true));
-  const Solution split = solve(two_bumps(0.0));
+  const Solution one = test::solve_converged(two_bumps(-1.0, true));
+  const Solution split = test::solve_converged(two_bumps(0.0));
   ASSERT_GT(one.statistics.ncon, 20);
   EXPECT_NEAR(split.totals.fn, 2.0 * one.totals.fn, 1e-6 * one.totals.fn);
   EXPECT_NEAR(split.totals.fx, 2.0 * one.totals.fx, 1e-5 * std::abs(one.totals.fx));
@@ -67,17 +61,17 @@ TEST(PlanformInteraction, NoInteractionSplitsIntoIndependentProblems) {
 }
 
 TEST(PlanformInteraction, FullInteractionIsThePlainProblem) {
-  const Solution plain = solve(two_bumps(-1.0));
-  const Solution full = solve(two_bumps(1.0));
+  const Solution plain = test::solve_converged(two_bumps(-1.0));
+  const Solution full = test::solve_converged(two_bumps(1.0));
   EXPECT_NEAR(full.totals.fn, plain.totals.fn, 1e-9 * plain.totals.fn);
   EXPECT_NEAR(full.totals.fx, plain.totals.fx, 1e-9 * std::abs(plain.totals.fx));
 }
 
 TEST(PlanformInteraction, PartialInteractionLiesBetween) {
   // At a fixed approach, the neighbour's pressure lifts the surface: less interaction, more load.
-  const double fn_full = solve(two_bumps(1.0)).totals.fn;
-  const double fn_half = solve(two_bumps(0.5)).totals.fn;
-  const double fn_none = solve(two_bumps(0.0)).totals.fn;
+  const double fn_full = test::solve_converged(two_bumps(1.0)).totals.fn;
+  const double fn_half = test::solve_converged(two_bumps(0.5)).totals.fn;
+  const double fn_none = test::solve_converged(two_bumps(0.0)).totals.fn;
   EXPECT_LT(fn_full, fn_half);
   EXPECT_LT(fn_half, fn_none);
   EXPECT_GT(fn_none - fn_full, 1e-3 * fn_full);  // the effect is visible at all

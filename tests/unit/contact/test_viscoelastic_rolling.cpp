@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rollcontact/solve.hpp"
+#include "support/patch_solve.hpp"
 
 namespace rollcontact {
 namespace {
@@ -39,13 +40,6 @@ model::PatchProblem rolling_ball(double creep_ratio, double relaxation_time_s, b
   return p;
 }
 
-Solution solve(const model::PatchProblem& p) {
-  PatchSolver s;
-  Solution sol = s.solve(p);
-  EXPECT_TRUE(sol.solver.converged) << sol.solver.message;
-  return sol;
-}
-
 double pmax(const Solution& s) {
   return *std::max_element(s.pn.begin(), s.pn.end());
 }
@@ -71,8 +65,8 @@ void expect_same_case(const Solution& a, const Solution& b, double rel) {
 
 TEST(ViscoelasticRolling, NoCreepIsTheElasticSolutionBitForBit) {
   // FG = 0: no viscous part, whatever TC; the elastic operators and solvers are used unchanged.
-  const Solution visco = solve(rolling_ball(0.0, 0.01, true, kGlassy, -1e-3));
-  const Solution elastic = solve(rolling_ball(0.0, 0.0, false, kGlassy, -1e-3));
+  const Solution visco = test::solve_converged(rolling_ball(0.0, 0.01, true, kGlassy, -1e-3));
+  const Solution elastic = test::solve_converged(rolling_ball(0.0, 0.0, false, kGlassy, -1e-3));
   EXPECT_EQ(visco.pn, elastic.pn);
   EXPECT_EQ(visco.px, elastic.px);
   EXPECT_EQ(visco.totals.pen, elastic.totals.pen);
@@ -84,16 +78,20 @@ TEST(ViscoelasticRolling, InstantRelaxationIsTheRubberyElasticSolution) {
   // rubbery ones to rounding; the normal solvers differ (active set with GMRES vs NormCG to
   // EPS = 1e-9), hence 1e-7. TC = 1e-9 s (ℓ = 1 µm, 1/200 element): within O(ℓ/δx) = 1e-3.
   const double fg = 1.0;
-  const Solution rubbery = solve(rolling_ball(0.0, 0.0, false, kGlassy / (1.0 + fg), -1e-3));
-  expect_same_case(solve(rolling_ball(fg, 0.0, true, kGlassy, -1e-3)), rubbery, 1e-7);
-  expect_same_case(solve(rolling_ball(fg, 1e-6, true, kGlassy, -1e-3)), rubbery, 1e-3);
+  const Solution rubbery =
+      test::solve_converged(rolling_ball(0.0, 0.0, false, kGlassy / (1.0 + fg), -1e-3));
+  expect_same_case(test::solve_converged(rolling_ball(fg, 0.0, true, kGlassy, -1e-3)), rubbery,
+                   1e-7);
+  expect_same_case(test::solve_converged(rolling_ball(fg, 1e-6, true, kGlassy, -1e-3)), rubbery,
+                   1e-3);
 }
 
 TEST(ViscoelasticRolling, SlowRelaxationIsTheGlassyElasticSolution) {
   // TC → ∞: the material has no time to creep while it passes the contact; the viscous part
   // decays like FG·(L/ℓ)·log(ℓ/L), L = 4 mm the grid: ℓ = 1e7 mm leaves ~5e-6.
-  const Solution glassy = solve(rolling_ball(0.0, 0.0, false, kGlassy, -1e-3));
-  expect_same_case(solve(rolling_ball(1.0, 1e4, true, kGlassy, -1e-3)), glassy, 1e-4);
+  const Solution glassy = test::solve_converged(rolling_ball(0.0, 0.0, false, kGlassy, -1e-3));
+  expect_same_case(test::solve_converged(rolling_ball(1.0, 1e4, true, kGlassy, -1e-3)), glassy,
+                   1e-4);
 }
 
 TEST(ViscoelasticRolling, RollingResistancePeaksAtIntermediateRelaxation) {
@@ -105,7 +103,7 @@ TEST(ViscoelasticRolling, RollingResistancePeaksAtIntermediateRelaxation) {
   // contact length (semi-axis a ≈ 1.3–1.6 mm here).
   std::vector<double> arm;
   for (double tc : {0.0, 1e-4, 1.5e-3, 2e-2, 1e1})  // ℓ = 0, 0.1, 1.5, 20, 1e4 mm
-    arm.push_back(pressure_centre(solve(rolling_ball(1.0, tc, true))));
+    arm.push_back(pressure_centre(test::solve_converged(rolling_ball(1.0, tc, true))));
   EXPECT_NEAR(arm[0], 0.0, 1e-9);
   EXPECT_LT(std::abs(arm[4]), 0.02 * arm[2]);
   for (std::size_t k = 1; k < 4; ++k) EXPECT_GT(arm[k], 0.0) << k;

@@ -136,20 +136,24 @@ double largest(const std::vector<Kernel>& ks) {
   return m;
 }
 
+/// b (kernels of kAll on a 7 × 9 grid) is bt transposed as an operator: b_ij(Δ) = bt_ji(−Δ).
+void expect_transposed(const std::vector<Kernel>& b, const std::vector<Kernel>& bt, double tol) {
+  for (std::size_t q = 0; q < kAll.size(); ++q) {
+    const std::size_t t = static_cast<std::size_t>(
+        std::find(kAll.begin(), kAll.end(), transposed(kAll[q])) - kAll.begin());
+    for (int diy = -8; diy <= 8; ++diy)
+      for (int dix = -6; dix <= 6; ++dix)
+        ASSERT_NEAR(b[q].at(dix, diy), bt[t].at(-dix, -diy), tol) << q << " " << dix << diy;
+  }
+}
+
 // B of variant 3 (the displacement turned) is that of variant 1 (the load turned) transposed as
 // an operator: B3_ij(Δ) = B1_ji(−Δ).
 TEST(InclinationKernels, TurningTheDisplacementIsTurningTheLoadTransposed) {
   const Grid grid{7, 9, 0.0, 0.0, 0.5, 0.4};
   const std::vector<Kernel> b1 = make_kernels(kAll, grid, turned(1, 0.04));
   const std::vector<Kernel> b3 = make_kernels(kAll, grid, turned(3, 0.04));
-  const double tol = 1e-14 * largest(b1);
-  for (std::size_t q = 0; q < kAll.size(); ++q) {
-    const std::size_t t = static_cast<std::size_t>(
-        std::find(kAll.begin(), kAll.end(), transposed(kAll[q])) - kAll.begin());
-    for (int diy = -8; diy <= 8; ++diy)
-      for (int dix = -6; dix <= 6; ++dix)
-        ASSERT_NEAR(b3[q].at(dix, diy), b1[t].at(-dix, -diy), tol) << q << " " << dix << diy;
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_transposed(b3, b1, 1e-14 * largest(b1)));
 }
 
 // Variant 4 turns load and displacement halfway: the operator stays symmetric, as the
@@ -157,14 +161,7 @@ TEST(InclinationKernels, TurningTheDisplacementIsTurningTheLoadTransposed) {
 TEST(InclinationKernels, HalfwayTurnsKeepTheOperatorSymmetric) {
   const Grid grid{7, 9, 0.0, 0.0, 0.5, 0.4};
   const std::vector<Kernel> b = make_kernels(kAll, grid, turned(4, -0.06));
-  const double tol = 1e-14 * largest(b);
-  for (std::size_t q = 0; q < kAll.size(); ++q) {
-    const std::size_t t = static_cast<std::size_t>(
-        std::find(kAll.begin(), kAll.end(), transposed(kAll[q])) - kAll.begin());
-    for (int diy = -8; diy <= 8; ++diy)
-      for (int dix = -6; dix <= 6; ++dix)
-        ASSERT_NEAR(b[q].at(dix, diy), b[t].at(-dix, -diy), tol) << q << " " << dix << diy;
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_transposed(b, b, 1e-14 * largest(b)));
   // Variant 1 is not: the normal load turned into the lateral direction has no counterpart.
   const std::vector<Kernel> b1 =
       make_kernels({Component::yn, Component::ny}, grid, turned(1, -0.06));

@@ -177,12 +177,7 @@ TEST(ConformalContact, LeftWheelMirrorsTheRightOne) {
   // The mirror image of a right-wheel case on a left wheel (inputs in track coordinates) gives
   // the right wheel's conformal patch mirrored: lateral positions, angles, FS and the lateral
   // forces change sign, everything else is bit for bit the same.
-  model::WheelRailProblem right = test_support::crowned_rail_problem(300.0, 0.05);
-  right.patch.tangential.kind = model::TangentialKind::SteadyRolling;
-  right.vertical = model::VerticalLoading::Force;
-  right.motion.fz_N = 10000.0;
-  right.motion.y_mm = 1.5;
-  right.motion.yaw_rad = 0.004;
+  model::WheelRailProblem right = test_support::yawed_conical_wheel();
   right.motion.vy_mm_s = 3.0;
   right.search.conformal = true;
   const model::WheelRailProblem left = test_support::mirrored_left(right);

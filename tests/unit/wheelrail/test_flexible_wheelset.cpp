@@ -15,15 +15,6 @@
 namespace rollcontact {
 namespace {
 
-/// A conical wheel (slope 0.05) rolling on the crowned rail at 10 kN.
-model::WheelRailProblem rolling_cone() {
-  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0, 0.05);
-  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
-  p.vertical = model::VerticalLoading::Force;
-  p.motion.fz_N = 10000.0;
-  return p;
-}
-
 WheelRailSolution solve(const model::WheelRailProblem& p) {
   WheelsetSolver solver;
   WheelRailSolution s = solver.solve(p);
@@ -34,9 +25,9 @@ WheelRailSolution solve(const model::WheelRailProblem& p) {
 
 TEST(FlexibleWheelset, LateralDeviationIsALateralWheelsetShift) {
   // Unrotated wheelset: DYWHL = 1.5 mm moves the wheel exactly as Y_WS = 1.5 mm does.
-  model::WheelRailProblem shifted = rolling_cone();
+  model::WheelRailProblem shifted = test_support::rolling_conical_wheel();
   shifted.motion.y_mm = 1.5;
-  model::WheelRailProblem deviated = rolling_cone();
+  model::WheelRailProblem deviated = test_support::rolling_conical_wheel();
   deviated.wheel_deviation.dy_mm = 1.5;
   const WheelRailSolution a = solve(shifted), b = solve(deviated);
   ASSERT_EQ(a.patches.size(), 1u);
@@ -50,7 +41,7 @@ TEST(FlexibleWheelset, LateralDeviationIsALateralWheelsetShift) {
   EXPECT_NEAR(b.patches[0].reference_wheel.y, a.patches[0].reference_wheel.y, 1e-9);
   // The contact stays where the slopes match on the rail; the wheel touches it 1.5 mm further
   // towards its flange (the test has something to tell apart).
-  const WheelRailSolution c = solve(rolling_cone());
+  const WheelRailSolution c = solve(test_support::rolling_conical_wheel());
   EXPECT_NEAR(c.patches[0].reference_wheel.y - a.patches[0].reference_wheel.y, 1.5, 1e-3);
 }
 
@@ -58,9 +49,9 @@ TEST(FlexibleWheelset, VerticalDeviationLowersTheWheel) {
   // FZ prescribed: a wheel DZWHL = 0.02 mm lower on its wheelset lets the wheelset sit 0.02 mm
   // higher for the same contact (z_ws to the vertical iteration's tolerance, EPS·FZ over the
   // contact stiffness ≈ 1e-8 mm).
-  model::WheelRailProblem deviated = rolling_cone();
+  model::WheelRailProblem deviated = test_support::rolling_conical_wheel();
   deviated.wheel_deviation.dz_mm = 0.02;
-  const WheelRailSolution a = solve(rolling_cone()), b = solve(deviated);
+  const WheelRailSolution a = solve(test_support::rolling_conical_wheel()), b = solve(deviated);
   ASSERT_EQ(a.patches.size(), 1u);
   ASSERT_EQ(b.patches.size(), 1u);
   EXPECT_NEAR(b.z_ws_mm, a.z_ws_mm - 0.02, 1e-6);
@@ -96,9 +87,9 @@ TEST(FlexibleWheelset, StaticYawDeviationCreatesNoCreepage) {
 
 TEST(FlexibleWheelset, DeviationRatesAreWheelVelocities) {
   // VYWHL = 3 mm/s on an unrotated wheelset is VY = 3 mm/s: the same lateral creepage.
-  model::WheelRailProblem moving = rolling_cone();
+  model::WheelRailProblem moving = test_support::rolling_conical_wheel();
   moving.motion.vy_mm_s = 3.0;
-  model::WheelRailProblem deviated = rolling_cone();
+  model::WheelRailProblem deviated = test_support::rolling_conical_wheel();
   deviated.wheel_deviation.vy_mm_s = 3.0;
   const WheelRailSolution a = solve(moving), b = solve(deviated);
   ASSERT_EQ(a.patches.size(), 1u);
@@ -108,9 +99,9 @@ TEST(FlexibleWheelset, DeviationRatesAreWheelVelocities) {
   EXPECT_NEAR(b.force_tr.y, a.force_tr.y, 1e-6);
   // A yaw rate of the wheel about its marker adds spin: Δφ = −VYAWW·cos δ / V (and moves the
   // contact point, off the marker, laterally).
-  model::WheelRailProblem spinning = rolling_cone();
+  model::WheelRailProblem spinning = test_support::rolling_conical_wheel();
   spinning.wheel_deviation.vyaw_rad_s = 0.02;
-  const WheelRailSolution base = solve(rolling_cone()), c = solve(spinning);
+  const WheelRailSolution base = solve(test_support::rolling_conical_wheel()), c = solve(spinning);
   ASSERT_EQ(c.patches.size(), 1u);
   const WheelRailPatch& w = c.patches[0];
   // (V itself changes by the yaw rate's x-velocity at the contact, 0.02 × 15 mm/s of 2000.)
@@ -122,7 +113,7 @@ TEST(FlexibleWheelset, DeviationRatesAreWheelVelocities) {
 }
 
 TEST(FlexibleWheelset, LeftWheelIsTheMirrorImageOfTheRightOne) {
-  model::WheelRailProblem right = rolling_cone();
+  model::WheelRailProblem right = test_support::rolling_conical_wheel();
   right.motion.y_mm = 1.0;
   right.wheel_deviation = {0.3, 0.5, 0.01, 0.001, 0.004, 0.0, 1.0, 2.0, 0.0, 0.01, 0.02, 0.0};
   const model::WheelRailProblem left = test_support::mirrored_left(right);  // deviations too

@@ -71,12 +71,7 @@ TEST(InclinationCorrectionWheelRail, ConformalPatchTurnsItsCoefficientsByItsRows
 // The left wheel's patch is the right one's mirrored, correction included (a conical wheel on
 // a 300 mm crown, off centre and yawed: rows turning by 1/600 rad per mm).
 TEST(InclinationCorrectionWheelRail, LeftWheelMirrorsTheRightOne) {
-  model::WheelRailProblem right = test_support::crowned_rail_problem(300.0, 0.05);
-  right.patch.tangential.kind = model::TangentialKind::SteadyRolling;
-  right.vertical = model::VerticalLoading::Force;
-  right.motion.fz_N = 10000.0;
-  right.motion.y_mm = 1.5;
-  right.motion.yaw_rad = 0.004;
+  model::WheelRailProblem right = test_support::yawed_conical_wheel();
   right.search.conformal = true;
   right.patch.bodies.inclination.variant = 1;
   const WheelRailSolution r = solve(right);

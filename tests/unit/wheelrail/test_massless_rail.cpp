@@ -264,12 +264,7 @@ TEST(MasslessRail, PrescribedPositionSolvesTheVerticalSpring) {
 
 TEST(MasslessRail, LeftWheelIsTheMirrorImage) {
   // Inputs and outputs are track coordinates: the mirrored left case deflects the rail by −δy.
-  model::WheelRailProblem right = test_support::crowned_rail_problem(300.0, 0.05);
-  right.patch.tangential.kind = model::TangentialKind::SteadyRolling;
-  right.vertical = model::VerticalLoading::Force;
-  right.motion.fz_N = 10000.0;
-  right.motion.y_mm = 1.5;
-  right.motion.yaw_rad = 0.004;
+  model::WheelRailProblem right = test_support::yawed_conical_wheel();
   right = on_massless_rail(right, 2e4, 800.0, 1e5, 200.0);
   const model::WheelRailProblem left = test_support::mirrored_left(right);
   const WheelRailSolution r = WheelsetSolver().solve(right), l = WheelsetSolver().solve(left);

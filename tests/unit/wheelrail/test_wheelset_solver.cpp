@@ -125,12 +125,7 @@ TEST(WheelsetSolver, ConicalWheelRollsFreelyAtItsTapeCircle) {
 }
 
 TEST(WheelsetSolver, LeftWheelIsTheMirrorImageOfTheRightOne) {
-  model::WheelRailProblem right = test_support::crowned_rail_problem(300.0, 0.05);
-  right.patch.tangential.kind = model::TangentialKind::SteadyRolling;
-  right.vertical = model::VerticalLoading::Force;
-  right.motion.fz_N = 10000.0;
-  right.motion.y_mm = 1.5;
-  right.motion.yaw_rad = 0.004;
+  model::WheelRailProblem right = test_support::yawed_conical_wheel();
   right.motion.vy_mm_s = 3.0;
   const model::WheelRailProblem left = test_support::mirrored_left(right);
   WheelsetSolver a, b;
@@ -216,10 +211,7 @@ TEST(WheelsetSolver, PreviousCaseStartsTheVerticalIterationWithIestim) {
   // Time steps of an MBS code: the wheelset moves 0.1 mm between calls. With I ≥ 1 the vertical
   // iteration starts from the previous approach (scaled by the force) instead of Hertz: the same
   // answer to the tolerance, from a much better first estimate.
-  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0, 0.05);
-  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
-  p.vertical = model::VerticalLoading::Force;
-  p.motion.fz_N = 10000.0;
+  model::WheelRailProblem p = test_support::rolling_conical_wheel();
   WheelsetSolver plain, continued;
   p.estimate_from_previous_case = true;
   (void)continued.solve(p);
@@ -243,10 +235,7 @@ TEST(WheelsetSolver, SweepCasesStartFromThePreviousApproaches) {
   // iteration starts from the last two cases' approaches extrapolated — the same answer to the
   // tolerance as a solve from Hertz, from a closer first estimate. KPEC too (a state with a
   // second lobe is forgotten instead: test_approximate_wheelrail).
-  model::WheelRailProblem p = test_support::crowned_rail_problem(300.0, 0.05);
-  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
-  p.vertical = model::VerticalLoading::Force;
-  p.motion.fz_N = 10000.0;
+  model::WheelRailProblem p = test_support::rolling_conical_wheel();
   p.estimate_from_previous_case = false;
   WheelsetSolver sweep;
   WheelRailSolution b;

@@ -52,6 +52,24 @@ inline model::WheelRailProblem crowned_rail_problem(double rail_radius_mm, doubl
   return p;
 }
 
+/// crowned_rail_problem(300 mm, conicity 0.05) in steady rolling with FZ = 10 kN prescribed.
+inline model::WheelRailProblem rolling_conical_wheel() {
+  model::WheelRailProblem p = crowned_rail_problem(300.0, 0.05);
+  p.patch.tangential.kind = model::TangentialKind::SteadyRolling;
+  p.vertical = model::VerticalLoading::Force;
+  p.motion.fz_N = 10000.0;
+  return p;
+}
+
+/// rolling_conical_wheel() off centre (y = 1.5 mm) and yawed (4 mrad): the right wheel of the
+/// left/right mirror tests.
+inline model::WheelRailProblem yawed_conical_wheel() {
+  model::WheelRailProblem p = rolling_conical_wheel();
+  p.motion.y_mm = 1.5;
+  p.motion.yaw_rad = 0.004;
+  return p;
+}
+
 /// The same problem on a left wheel: its inputs are track coordinates in the left wheel's
 /// mirrored frame, so every lateral input changes sign — the wheelset's lateral position, yaw
 /// and lateral velocity, the rail's absolute lateral placement, the wheel's lateral deviations
